@@ -1,0 +1,144 @@
+//! The crate's error type.
+//!
+//! Every variant names the field or quantity it is about and carries the numbers, so that a
+//! message can be acted on without a debugger. The library never panics on user input.
+
+use thiserror::Error;
+
+/// Result alias used throughout the crate.
+pub type Result<T> = std::result::Result<T, Error>;
+
+/// Everything that can go wrong, from bad input to a solver that cannot reach its accuracy.
+#[derive(Debug, Error, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum Error {
+    /// An input is outside its allowed range (or not finite).
+    #[error("{field} = {value:e} is out of range: allowed {allowed}")]
+    OutOfRange {
+        /// Name of the field as the user wrote it.
+        field: &'static str,
+        /// The offending value.
+        value: f64,
+        /// The allowed range, in words (e.g. `"0 < g_inf < inf"`).
+        allowed: &'static str,
+    },
+    /// An explicit time step is above the stability bound of an explicit scheme.
+    #[error(
+        "time step {dt:e} (dimensionless) exceeds the stability bound {bound:e} of {scheme}; \
+             reduce the step or use a stable solver (mdr, fast, reference)"
+    )]
+    UnstableStep {
+        /// The scheme that would blow up.
+        scheme: &'static str,
+        /// Requested step, in units of the impact's time scale.
+        dt: f64,
+        /// Largest stable step in the same units.
+        bound: f64,
+    },
+    /// A solver would need more work than its hard cap allows.
+    #[error("{solver}: {what} = {needed} exceeds the work limit {limit}; loosen rtol or use another solver")]
+    WorkLimit {
+        /// Solver name.
+        solver: &'static str,
+        /// What is counted (time steps, elements, ...).
+        what: &'static str,
+        /// What would be needed.
+        needed: u64,
+        /// The cap.
+        limit: u64,
+    },
+    /// An adaptive driver could not reach the requested accuracy.
+    #[error("{solver}: requested rtol {rtol:e} not reached, estimated relative error {estimate:e} after {levels} refinements")]
+    AccuracyNotReached {
+        /// Solver name.
+        solver: &'static str,
+        /// Requested relative tolerance of the CoR.
+        rtol: f64,
+        /// Best error estimate reached.
+        estimate: f64,
+        /// Refinement levels tried.
+        levels: u32,
+    },
+    /// An iteration (root finder, contact-set iteration, time loop) did not finish within its bound.
+    #[error("{what} did not converge within {iterations} iterations")]
+    NoConvergence {
+        /// What was iterating.
+        what: &'static str,
+        /// The bound that was hit.
+        iterations: u64,
+    },
+    /// A numerical integral failed its accuracy check.
+    #[error("quadrature of {what} on [{a:e}, {b:e}] failed: error estimate {estimate:e} > tolerance {tolerance:e}")]
+    Quadrature {
+        /// What was integrated.
+        what: &'static str,
+        /// Lower limit.
+        a: f64,
+        /// Upper limit.
+        b: f64,
+        /// Error estimate returned.
+        estimate: f64,
+        /// Requested absolute tolerance.
+        tolerance: f64,
+    },
+    /// A computed quantity was not finite (a bug or an input far outside any physical range).
+    #[error("{what} is not finite ({value})")]
+    NonFinite {
+        /// The quantity.
+        what: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// A scene file could not be read or parsed.
+    #[error("scene: {0}")]
+    Scene(String),
+    /// A CSV input row is bad.
+    #[error("{file}:{line}: {message}")]
+    Csv {
+        /// File name.
+        file: String,
+        /// 1-based line number in the file (the header is line 1).
+        line: u64,
+        /// What is wrong.
+        message: String,
+    },
+    /// A request that the chosen solver does not support.
+    #[error("{0}")]
+    Unsupported(String),
+    /// File system or output error.
+    #[error("{path}: {message}")]
+    Io {
+        /// The path involved.
+        path: String,
+        /// The OS message.
+        message: String,
+    },
+}
+
+impl Error {
+    /// Helper for I/O errors that keeps the path.
+    pub fn io(path: impl AsRef<std::path::Path>, err: impl std::fmt::Display) -> Self {
+        Error::Io {
+            path: path.as_ref().display().to_string(),
+            message: err.to_string(),
+        }
+    }
+}
+
+/// Check that `value` is finite and satisfies `ok`; otherwise return [`Error::OutOfRange`].
+pub(crate) fn check(
+    field: &'static str,
+    value: f64,
+    ok: bool,
+    allowed: &'static str,
+) -> Result<f64> {
+    if value.is_finite() && ok {
+        Ok(value)
+    } else {
+        Err(Error::OutOfRange {
+            field,
+            value,
+            allowed,
+        })
+    }
+}

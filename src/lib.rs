@@ -1,0 +1,27 @@
+//! # mdr-impact
+//!
+//! Quasi-static normal impact of a rigid sphere on a linear-viscoelastic, compressible half-space
+//! (a standard solid in shear with elastic bulk), after Willert et al., *The influence of
+//! compressibility on the restitution coefficient for viscoelastic spheres in low-velocity normal
+//! impacts*.
+//!
+//! Where the paper lives in the code:
+//! - [`material`]: Eqs. (1)–(3), the equivalent relaxation function and the element of Eq. (8);
+//! - [`impact`]: Eqs. (10)–(11), scales and outcome;
+//! - [`mdr`]: the MDR foundation, Eqs. (4)–(9), with two time schemes;
+//! - [`theory`]: Hertz, Lee–Radok and Ting/Graham, independent of [`mdr`];
+//! - [`solver`]: solver choice and dispatch.
+#![warn(missing_docs)]
+
+pub mod error;
+pub mod impact;
+pub mod indentation;
+pub mod material;
+pub mod solver;
+pub mod theory;
+pub mod tolerances;
+
+pub use error::{Error, Result};
+pub use impact::{Groups, History, Impact, Outcome, Sphere, Work};
+pub use material::{Bulk, Material, Prony, PronyTerm};
+pub use solver::{solve, Resolution, SolveOptions, SolverKind};
