@@ -17,6 +17,7 @@ pub mod error;
 pub mod impact;
 pub mod indentation;
 pub mod material;
+pub mod mdr;
 pub mod solver;
 pub mod theory;
 pub mod tolerances;

@@ -3,6 +3,8 @@
 
 use crate::error::{Error, Result};
 use crate::impact::{Impact, Outcome};
+use crate::material::ElementNetwork;
+use crate::mdr;
 use crate::tolerances;
 
 /// The available impact solvers.
@@ -129,10 +131,40 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
     Ok(canonical.to_si(impact))
 }
 
+/// The impact's material in canonical units, in the forms the MDR schemes need.
+pub fn canonical_material(impact: &Impact) -> mdr::CanonicalMaterial {
+    let s = impact.scales();
+    mdr::CanonicalMaterial {
+        prony: impact.canonical_relaxation(),
+        network: ElementNetwork::new(&impact.material()).scaled(s.modulus, s.time),
+    }
+}
+
 fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
-    let _ = impact;
-    let _ = opts;
-    Err(Error::Unsupported("no solver yet".into()))
+    let material = canonical_material(impact);
+    let scheme = match opts.solver {
+        SolverKind::MdrEuler => mdr::Scheme::Euler,
+        SolverKind::Mdr | SolverKind::Auto => mdr::Scheme::Exponential,
+        SolverKind::Reference => {
+            return Err(Error::Unsupported(
+                "solver 'reference' is not available yet".into(),
+            ))
+        }
+    };
+    match opts.resolution {
+        Some(r) => {
+            let layout = mdr::pilot(&material.prony)?;
+            mdr::run_resolution(
+                scheme,
+                &material,
+                &layout,
+                r.elements,
+                r.steps,
+                opts.history,
+            )
+        }
+        None => mdr::solve_rtol(scheme, &material, opts.rtol, opts.history),
+    }
 }
 
 /// Refuse to hand out a non-finite or unphysical outcome.

@@ -6,3 +6,22 @@ pub const DEFAULT_RTOL: f64 = 1e-6;
 pub const MIN_RTOL: f64 = 1e-12;
 /// Largest rtol accepted.
 pub const MAX_RTOL: f64 = 0.1;
+
+/// Iteration cap of every scalar root finder.
+pub const ROOT_MAX_ITER: usize = 200;
+/// Elements per contact radius of the MDR pilot run that lays out the grid.
+pub const PILOT_ELEMENTS: usize = 16;
+/// Steps per contact time of the MDR pilot run.
+pub const PILOT_STEPS: usize = 48;
+/// Restarts of the pilot run before giving up.
+pub const PILOT_MAX_RESTARTS: usize = 24;
+/// Hard cap on MDR elements.
+pub const MDR_MAX_ELEMENTS: usize = 1 << 22;
+/// Elements per contact radius on the first level of the adaptive MDR driver.
+pub const MDR_START_ELEMENTS: usize = 16;
+/// Steps per contact time on the first level of the adaptive MDR driver.
+pub const MDR_START_STEPS: usize = 32;
+/// Refinement levels of the adaptive MDR driver.
+pub const MDR_MAX_LEVELS: u32 = 16;
+/// Cap on element updates (element-steps) of one adaptive MDR solve (a few seconds of work).
+pub const MDR_MAX_ELEMENT_UPDATES: u64 = 4_000_000_000;

@@ -1,0 +1,1 @@
+//! Displacement-controlled MDR: the foundation driven by a prescribed indentation history.
