@@ -12,12 +12,18 @@
 //! - [`theory`]: Hertz, Lee–Radok and Ting/Graham, independent of [`mdr`];
 //! - [`solver`]: solver choice and dispatch.
 #![warn(missing_docs)]
+// `!(x > 0.0)` is used on purpose: it is true for NaN, which must be rejected too.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+pub mod batch;
 pub mod error;
 pub mod impact;
 pub mod indentation;
 pub mod material;
 pub mod mdr;
+pub mod output;
+pub mod plot;
+pub mod scene;
 pub mod solver;
 pub mod theory;
 pub mod tolerances;

@@ -617,7 +617,7 @@ pub fn solve_rtol(
             let est = (o.cor - p).abs() / factor;
             let scale = o.cor.abs().max(1e-300);
             last_est = est / scale;
-            let consistent = prev_est.map_or(false, |pe| pe / (factor + 1.0) <= rtol * scale);
+            let consistent = prev_est.is_some_and(|pe| pe / (factor + 1.0) <= rtol * scale);
             if est <= rtol * scale && consistent {
                 o.work = work;
                 o.cor_error_estimate = Some(last_est);
