@@ -81,6 +81,9 @@ pub struct SolveOptions {
     pub resolution: Option<Resolution>,
     /// Record the histories `(t, d, v, F, a)`.
     pub history: bool,
+    /// Cap on the work of the MDR solvers, in element updates (element-steps) summed over the
+    /// refinement levels; beyond it the solve fails with [`Error::AccuracyNotReached`].
+    pub work_limit: u64,
 }
 
 impl Default for SolveOptions {
@@ -90,6 +93,7 @@ impl Default for SolveOptions {
             rtol: tolerances::DEFAULT_RTOL,
             resolution: None,
             history: false,
+            work_limit: tolerances::MDR_MAX_ELEMENT_UPDATES,
         }
     }
 }
@@ -153,6 +157,15 @@ fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
     };
     match opts.resolution {
         Some(r) => {
+            let needed = (r.elements as u64).saturating_mul(r.steps as u64);
+            if needed > opts.work_limit {
+                return Err(Error::WorkLimit {
+                    solver: scheme.name(),
+                    what: "elements x steps",
+                    needed,
+                    limit: opts.work_limit,
+                });
+            }
             let layout = mdr::pilot(&material.prony)?;
             mdr::run_resolution(
                 scheme,
@@ -163,7 +176,7 @@ fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
                 opts.history,
             )
         }
-        None => mdr::solve_rtol(scheme, &material, opts.rtol, opts.history),
+        None => mdr::solve_rtol(scheme, &material, opts.rtol, opts.history, opts.work_limit),
     }
 }
 

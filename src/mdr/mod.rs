@@ -540,8 +540,6 @@ pub fn run_resolution(
 ) -> Result<Outcome> {
     let grid = Grid::from_layout(layout, elements, steps);
     let capacity = capacity_for(grid.dx, layout.contact_radius);
-    let work = (capacity as u64).saturating_mul(grid.max_steps);
-    let _ = work;
     match scheme {
         Scheme::Exponential => run_exponential(&material.prony, &grid, capacity, history),
         Scheme::Euler => {
@@ -573,6 +571,7 @@ pub fn solve_rtol(
     material: &CanonicalMaterial,
     rtol: f64,
     history: bool,
+    work_limit: u64,
 ) -> Result<Outcome> {
     let layout = pilot(&material.prony)?;
     let (mut n, mut m) = match scheme {
@@ -600,7 +599,7 @@ pub fn solve_rtol(
         let predicted =
             (capacity_for(layout.contact_radius / n as f64, layout.contact_radius) as u64 / 4)
                 .saturating_mul(m as u64 + 8);
-        if work.element_updates.saturating_add(predicted) > tolerances::MDR_MAX_ELEMENT_UPDATES {
+        if work.element_updates.saturating_add(predicted) > work_limit {
             return Err(Error::AccuracyNotReached {
                 solver: scheme.name(),
                 rtol,

@@ -1,0 +1,156 @@
+//! The command line as a user meets it: exit codes, one-line errors, outputs.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_mdr-impact"))
+}
+
+fn run(args: &[&str], dir: &Path) -> Output {
+    bin().args(args).current_dir(dir).output().unwrap()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).to_string()
+}
+
+fn assert_one_line_error(o: &Output, needle: &str) {
+    let code = o.status.code().unwrap();
+    assert!(code == 1 || code == 2, "exit {code}");
+    let e = stderr(o);
+    assert_eq!(e.trim_end().lines().count(), 1, "not one line: {e}");
+    assert!(e.contains(needle), "'{needle}' not in: {e}");
+    assert!(!e.contains("panicked"));
+}
+
+#[test]
+fn default_scene_runs_and_writes_outputs() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = run(&[], dir.path());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(out.contains("coefficient of restitution"));
+    assert!(out.contains("contact time") && out.contains(" s\n"));
+    assert!(out.contains("max force") && out.contains(" N\n"));
+    let csv = std::fs::read_to_string(dir.path().join("out/default-history.csv")).unwrap();
+    assert!(csv.starts_with("t,d,v,force,a\n"));
+    assert!(csv.lines().count() > 100);
+    let svg = std::fs::read_to_string(dir.path().join("out/default-force.svg")).unwrap();
+    assert!(svg.contains("<svg"));
+}
+
+#[test]
+fn cor_prints_the_cor_alone_on_the_last_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = run(
+        &[
+            "cor", "--nu", "0.45", "--p2", "0.01", "--p3", "1", "--solver", "mdr", "--rtol", "1e-4",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout).unwrap();
+    let e: f64 = out.lines().last().unwrap().trim().parse().unwrap();
+    assert!((e - 0.2350313).abs() < 1e-4 * 0.235, "{e}");
+}
+
+#[test]
+fn cor_input_csv_in_order_and_bad_rows_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("in.csv");
+    std::fs::write(&p, "nu,p2,p3\n0.5,0.001,10\n0.45,0.01,1\n-0.5,1,0.1\n").unwrap();
+    let o = run(
+        &[
+            "cor", "--input", "in.csv", "--solver", "mdr", "--rtol", "1e-4",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout).unwrap();
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines[0], "nu,p2,p3,cor,contact_time,max_indentation");
+    assert_eq!(lines.len(), 4);
+    assert!(lines[1].starts_with("0.5,0.001,10,"));
+    assert!(lines[2].starts_with("0.45,0.01,1,"));
+    assert!(lines[3].starts_with("-0.5,1,0.1,"));
+    for l in &lines[1..] {
+        for f in l.split(',') {
+            let x: f64 = f.parse().unwrap();
+            assert!(x.is_finite());
+        }
+    }
+    std::fs::write(&p, "nu,p2,p3\n0.3,1,1\n0.7,1,1\n").unwrap();
+    let o = run(&["cor", "--input", "in.csv"], dir.path());
+    assert_one_line_error(&o, "in.csv:3:");
+    assert!(o.stdout.is_empty());
+    std::fs::write(&p, "nu,p2,p3\n0.3,abc,1\n").unwrap();
+    assert_one_line_error(
+        &run(&["cor", "--input", "in.csv"], dir.path()),
+        "in.csv:2: p2 = 'abc'",
+    );
+    std::fs::write(&p, "nu,p3\n0.3,1\n").unwrap();
+    assert_one_line_error(
+        &run(&["cor", "--input", "in.csv"], dir.path()),
+        "in.csv:1: header",
+    );
+}
+
+#[test]
+fn bad_input_is_one_line_and_nonzero() {
+    let dir = tempfile::tempdir().unwrap();
+    assert_one_line_error(
+        &run(
+            &["cor", "--nu", "0.6", "--p2", "1", "--p3", "1"],
+            dir.path(),
+        ),
+        "nu = 6e-1",
+    );
+    assert_one_line_error(
+        &run(
+            &[
+                "cor", "--nu", "0.3", "--p2", "1", "--p3", "1", "--solver", "x",
+            ],
+            dir.path(),
+        ),
+        "unknown solver",
+    );
+    assert_one_line_error(
+        &run(
+            &[
+                "cor", "--nu", "0.3", "--p2", "1", "--p3", "1", "--rtol", "0",
+            ],
+            dir.path(),
+        ),
+        "rtol",
+    );
+    assert_one_line_error(&run(&["run", "missing.toml"], dir.path()), "missing.toml");
+    let scene = mdr_impact::scene::DEFAULT_SCENE.replace("[impact]", "[impact]\nspeed = 3.0");
+    std::fs::write(dir.path().join("s.toml"), scene).unwrap();
+    assert_one_line_error(
+        &run(&["run", "s.toml"], dir.path()),
+        "unknown field `speed`",
+    );
+    let scene = mdr_impact::scene::DEFAULT_SCENE.replace("g_1 = 1.0e7", "g_1 = -1.0");
+    std::fs::write(dir.path().join("s.toml"), scene).unwrap();
+    assert_one_line_error(
+        &run(&["run", "s.toml"], dir.path()),
+        "g_1 = -1e0 is out of range",
+    );
+    // explicit Euler step above the stability bound
+    let scene = mdr_impact::scene::DEFAULT_SCENE
+        .replace(
+            "name = \"auto\"",
+            "name = \"mdr-euler\"\nelements = 20\nsteps = 10",
+        )
+        .replace("[output]", "[unused]");
+    let scene: String = scene
+        .lines()
+        .filter(|l| {
+            !l.starts_with("history") && !l.starts_with("plot") && !l.starts_with("[unused]")
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    std::fs::write(dir.path().join("s.toml"), scene).unwrap();
+    assert_one_line_error(&run(&["run", "s.toml"], dir.path()), "stability bound");
+}
