@@ -25,3 +25,7 @@ pub const MDR_START_STEPS: usize = 32;
 pub const MDR_MAX_LEVELS: u32 = 16;
 /// Cap on element updates (element-steps) of one adaptive MDR solve (a few seconds of work).
 pub const MDR_MAX_ELEMENT_UPDATES: u64 = 4_000_000_000;
+/// Default elements across the maximum contact radius of a displacement-controlled MDR run.
+pub const INDENT_ELEMENTS: usize = 2000;
+/// Default time steps over a prescribed indentation history.
+pub const INDENT_STEPS: usize = 4000;

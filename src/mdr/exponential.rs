@@ -162,6 +162,31 @@ impl ExpFoundation {
         f
     }
 
+    /// Contact radius where the force density of the foundation vanishes: linear extrapolation
+    /// of the two outermost elements' forces at depth `d` (current states), kept within the
+    /// outermost element's cell.
+    pub(crate) fn edge_radius(&self, d: f64) -> f64 {
+        let dx = self.geom.dx();
+        match self.n {
+            0 => 0.0,
+            1 => dx,
+            n => {
+                let k_n = self.coef.len();
+                let force = |i: usize| {
+                    let mut f = self.c_inf * (d - self.geom.g(i));
+                    for k in 0..k_n {
+                        f += self.coef[k] * self.h[i * k_n + k];
+                    }
+                    f
+                };
+                let (fo, fi) = (force(n - 1), force(n - 2));
+                let x_o = (n as f64 - 0.5) * dx;
+                let s = if fi > fo { fo / (fi - fo) } else { 0.5 };
+                x_o + dx * s.clamp(0.0, 0.5)
+            }
+        }
+    }
+
     /// Affine contribution of the outermost element (to subtract when it leaves).
     pub(crate) fn outer_affine(&self, d: f64) -> Affine {
         let i = self.n - 1;
