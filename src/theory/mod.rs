@@ -57,7 +57,7 @@ pub const REF_MAX_STEPS: u64 = 200_000;
 pub const REF_MAX_NEWTON: u64 = 40;
 
 /// Convergence threshold of the collocation Newton iteration (absolute, canonical units).
-pub const REF_NEWTON_TOL: f64 = 1e-15;
+pub const REF_NEWTON_TOL: f64 = 1e-16;
 
 /// Tolerance on `|v|` (canonical) when landing a step on the time of maximum indentation.
 pub const REF_EVENT_TOL: f64 = 1e-15;
