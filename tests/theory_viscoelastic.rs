@@ -18,6 +18,7 @@ fn cases() -> Vec<(&'static str, Prony)> {
         ("dissipative nu=0.3", canon(0.3, 0.1, 1.0)),
         ("strong nu=0.49", canon(0.49, 1e-2, 0.2)),
         ("compressible nu=0", canon(0.0, 0.1, 3.0)),
+        ("stiff tau=1e-6 nu=0.3", canon(0.3, 1e-3, 1e-3)),
         (
             "stiff tau=1e-4",
             Prony {
