@@ -62,7 +62,10 @@ fn cross_check_python_table() {
     let (mut max_e, mut max_t, mut max_d, mut n) = (0.0f64, 0.0f64, 0.0f64, 0);
     let mut worst = (0.0, 0.0, 0.0);
     for l in lines {
-        let v: Vec<f64> = l.split(',').map(|x| x.trim().parse().unwrap_or(f64::NAN)).collect();
+        let v: Vec<f64> = l
+            .split(',')
+            .map(|x| x.trim().parse().unwrap_or(f64::NAN))
+            .collect();
         let pr = Groups::new(v[cn], v[c2], v[c3])
             .unwrap()
             .canonical_material()

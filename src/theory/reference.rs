@@ -524,6 +524,52 @@ impl<'a> Solver<'a> {
         Ok((first, second, err))
     }
 
+    /// Compression force `(16/3)(c_inf d^(3/2) + sum_k c_k q_k)` at `t <= t_m` from the record.
+    fn compression_force(&self, t: f64) -> f64 {
+        let de = self.dense(t);
+        let mut f = self.prony.relaxed * de.d.max(0.0).powf(1.5);
+        for (k, p) in self.prony.terms.iter().enumerate() {
+            f += p.coefficient * de.q[k];
+        }
+        16.0 / 3.0 * f
+    }
+
+    /// Maximum of the compression force near the node time `t0` (golden-section search on the
+    /// dense record over the neighbouring steps; the force is smooth and unimodal there).
+    fn refine_max_force(&self, t0: f64) -> f64 {
+        let j = self.records.partition_point(|r| r.t0 <= t0).max(1) - 1;
+        let lo = if j > 0 { self.records[j - 1].t0 } else { 0.0 };
+        let hi = self
+            .records
+            .get(j + 1)
+            .map_or(self.t_m, |r| r.t0 + r.h)
+            .min(self.t_m);
+        let g = 0.5 * (5f64.sqrt() - 1.0);
+        let (mut a, mut b) = (lo, hi);
+        let mut x1 = b - g * (b - a);
+        let mut x2 = a + g * (b - a);
+        let (mut f1, mut f2) = (self.compression_force(x1), self.compression_force(x2));
+        for _ in 0..80 {
+            if f1 < f2 {
+                a = x1;
+                x1 = x2;
+                f1 = f2;
+                x2 = a + g * (b - a);
+                f2 = self.compression_force(x2);
+            } else {
+                b = x2;
+                x2 = x1;
+                f2 = f1;
+                x1 = b - g * (b - a);
+                f1 = self.compression_force(x1);
+            }
+            if b - a <= 1e-12 * hi {
+                break;
+            }
+        }
+        f1.max(f2)
+    }
+
     fn psi(&self, st: &State) -> f64 {
         self.prony.relaxed * st.d
             + self
@@ -573,6 +619,7 @@ fn run(prony: &Prony, tol: f64, want_history: bool) -> Result<Run> {
         hh.push(0.0, 0.0, 1.0, 0.0, 0.0);
     }
     let mut f_max = 0.0f64;
+    let mut f_max_t = 0.0f64;
     let mut h = H0;
     let mut steps = 0u64;
     let mut phase = Phase::Compression;
@@ -620,8 +667,10 @@ fn run(prony: &Prony, tol: f64, want_history: bool) -> Result<Run> {
                 continue;
             }
             for o in [&first, &second] {
-                for &(_, f) in &o.nodes {
-                    f_max = f_max.max(f);
+                for &(t, f) in &o.nodes {
+                    if f > f_max {
+                        (f_max, f_max_t) = (f, t);
+                    }
                 }
                 if phase == Phase::Compression {
                     sv.records.push(o.rec.clone());
@@ -694,8 +743,10 @@ fn run(prony: &Prony, tol: f64, want_history: bool) -> Result<Run> {
         }
         let (first, mut second, _) = o;
         for oo in [&first, &second] {
-            for &(_, f) in &oo.nodes {
-                f_max = f_max.max(f);
+            for &(t, f) in &oo.nodes {
+                if f > f_max {
+                    (f_max, f_max_t) = (f, t);
+                }
             }
         }
         match phase {
@@ -718,6 +769,9 @@ fn run(prony: &Prony, tol: f64, want_history: bool) -> Result<Run> {
                 push(&mut hist, &second.end, phase, &mut sv);
                 let d_max = sv.records.last().map_or(0.0, |r| r.b.iter().sum::<f64>());
                 let cor = -second.end.v;
+                if f_max_t < sv.t_m {
+                    f_max = f_max.max(sv.refine_max_force(f_max_t));
+                }
                 return Ok(Run {
                     cor,
                     t_end: second.end.t,
