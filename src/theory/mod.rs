@@ -1,3 +1,63 @@
 //! Independent reference theory: Hertz, Lee–Radok (compression) and Ting/Graham (restitution).
 //!
-//! Shares nothing with [`crate::mdr`] but the material definition.
+//! Shares nothing with the MDR solvers but the material definition ([`crate::material`]) and the
+//! prescribed indentation histories ([`crate::indentation`]). The formulations are those of the
+//! theory notes (`notes/theory.md`, §4 and §6):
+//!
+//! - [`hertz`]: closed forms of the elastic impact (notes §6), including the exact trajectory;
+//! - [`quad`]: a checked wrapper around `quadrature::integrate` (double-exponential rule);
+//! - [`special`]: Dawson's integral and the small special functions the closed forms need;
+//! - [`roots`]: a safeguarded (bracketed) Newton iteration;
+//! - [`viscoelastic`]: Lee–Radok/Ting force for a prescribed indentation `d(t)` with one maximum,
+//!   by quadrature for any history and in closed form for the triangle (Dawson);
+//! - [`reference`]: the impact solved from the Lee–Radok/Ting formulation with exponential
+//!   collocation (not an element foundation);
+//! - [`files`]: the reference force histories written to `reference/`.
+//!
+//! Every tolerance used by this module is a named constant below.
+
+pub mod files;
+pub mod hertz;
+pub mod quad;
+pub mod reference;
+pub mod roots;
+pub mod special;
+pub mod viscoelastic;
+
+pub use files::generate_reference;
+pub use hertz::{hertz_outcome, HertzImpact};
+pub use reference::impact;
+pub use viscoelastic::{response, separation_time, IndentSample};
+
+/// `I = int_0^1 (1 - x^(5/2))^(-1/2) dx = (2/5) B(2/5, 1/2)`: Hertz contact time is
+/// `2 I d_max / v0` (notes §6). Value from mpmath at 30 digits.
+pub const HERTZ_I: f64 = 1.471_637_592_162_352_3;
+
+/// Relative tolerance of the quadrature-based Lee–Radok/Ting integrals (absolute tolerance is this
+/// times the natural scale of the integral).
+pub const QUAD_RTOL: f64 = 1e-12;
+
+/// Relative tolerance of the roots `t_1(t)` and the separation time (in units of the peak time).
+pub const ROOT_RTOL: f64 = 1e-15;
+
+/// Iteration cap of every root finder of this module.
+pub const ROOT_MAX_ITER: u64 = 200;
+
+/// Number of quadrature sub-intervals allowed per integral (kinks plus kernel boundary layers).
+pub const QUAD_MAX_PIECES: usize = 64;
+
+/// Local error tolerance per step of the reference impact solver, relative to `rtol`:
+/// `tol_step = REF_LOCAL_FACTOR * rtol`.
+pub const REF_LOCAL_FACTOR: f64 = 0.05;
+
+/// Step cap of the reference impact solver (per phase and run).
+pub const REF_MAX_STEPS: u64 = 200_000;
+
+/// Newton iterations allowed per collocation step of the reference impact solver.
+pub const REF_MAX_NEWTON: u64 = 40;
+
+/// Convergence threshold of the collocation Newton iteration (absolute, canonical units).
+pub const REF_NEWTON_TOL: f64 = 1e-16;
+
+/// Tolerance on `|v|` (canonical) when landing a step on the time of maximum indentation.
+pub const REF_EVENT_TOL: f64 = 1e-15;
