@@ -45,7 +45,7 @@
 // explicit index loops mirror the formulas. The Radau nodes keep their mpmath digits.
 #![allow(clippy::needless_range_loop, clippy::excessive_precision)]
 
-use super::roots::newton_bracketed;
+use super::roots::newton_bracketed_with;
 use super::special::exp_moments;
 use super::{REF_EVENT_TOL, REF_LOCAL_FACTOR, REF_MAX_NEWTON, REF_MAX_STEPS, REF_NEWTON_TOL};
 use crate::error::{check, Error, Result};
@@ -280,11 +280,12 @@ impl<'a> Solver<'a> {
         let t1 = if fm >= 0.0 {
             tm
         } else {
-            newton_bracketed(
+            // Phi(0) = psi > 0 and Phi(t_m) = fm < 0 are known: no need to re-evaluate them.
+            newton_bracketed_with(
                 "Ting t1 (reference impact)",
                 |x| Ok(phi_at(x)),
-                0.0,
-                tm,
+                (0.0, psi),
+                (tm, fm),
                 Some(guess.clamp(0.0, tm)),
                 1e-16 * tm,
             )?
