@@ -905,6 +905,16 @@ fn run(prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
 /// Errors: [`Error::OutOfRange`] for `rtol` outside `[1e-13, 0.1]` or an invalid series,
 /// [`Error::AccuracyNotReached`] when the estimate stays above `rtol` after the refinement levels,
 /// and the step / iteration limits of the module.
+///
+/// ```
+/// # use mdr_impact::material::Prony;
+/// # use mdr_impact::theory::reference::impact;
+/// // Elastic, incompressible (G_eq = 1): Hertz with E* = 4, contact time 2 I (15/64)^(2/5).
+/// let o = impact(&Prony { relaxed: 1.0, terms: vec![] }, 1e-10, false).unwrap();
+/// assert!((o.cor - 1.0).abs() < 1e-12);
+/// let tc = 2.943_275_184_324_704_7 * (15.0f64 / 64.0).powf(0.4);
+/// assert!((o.contact_time - tc).abs() < 1e-10 * tc);
+/// ```
 pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
     let sampling = if history {
         Sampling::StepEnds
