@@ -45,7 +45,7 @@ fn triangle_quadrature_matches_closed_form() {
         let num = response(&prony, r, &h, &times).unwrap();
         let ts = separation_time(&prony, r, &h).unwrap();
         assert!(
-            (ts - ts_exact).abs() < 1e-10 * tp,
+            (ts - ts_exact).abs() < 1e-12 * tp,
             "{name}: ts {ts} vs {ts_exact}"
         );
         assert!(ts_exact > tp && ts_exact < 2.0 * tp, "{name}: {ts_exact}");
