@@ -96,3 +96,29 @@ fn prescribed_variant() {
     assert!(p.kinks().is_empty());
     assert!(Prescribed::hertz_impact(-1.0, 1.0).is_err());
 }
+
+/// SI Hertz outcome of a dimensional impact equals the canonical one mapped with the impact's
+/// scales (`Outcome::to_si`), to 1e-12: the closed forms respect the scaling of Eq. (11).
+#[test]
+fn si_outcome_matches_canonical_scaled() {
+    use mdr_impact::theory::hertz::hertz_outcome;
+    use mdr_impact::{Impact, Material, Sphere};
+    let m = Material::with_poisson(3e6, 0.0, 0.0, 0.3).unwrap();
+    let imp = Impact::new(Sphere::new(0.012, 0.004).unwrap(), 1.7, m).unwrap();
+    let si = hertz_outcome(&imp, None).unwrap();
+    let e_star = m.effective_modulus(m.g_inf()) / m.g_inf();
+    let can = HertzImpact::canonical(e_star)
+        .unwrap()
+        .outcome(None)
+        .unwrap()
+        .to_si(&imp);
+    for (a, b) in [
+        (si.contact_time, can.contact_time),
+        (si.max_indentation, can.max_indentation),
+        (si.max_force, can.max_force),
+        (si.max_contact_radius, can.max_contact_radius),
+        (si.rebound_velocity, can.rebound_velocity),
+    ] {
+        assert_relative_eq!(a, b, max_relative = 1e-12);
+    }
+}

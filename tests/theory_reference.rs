@@ -222,3 +222,46 @@ fn max_force_is_refined() {
     let i = h.force.iter().position(|&f| f == hmax).unwrap();
     assert!(h.t[i] < o.time_of_max_indentation);
 }
+
+/// Sampled histories (dense output): in the elastic case every sample equals the exact Hertz
+/// trajectory (d to 1e-10, F to 1e-9 of the peak); in a dissipative case the last sample is free
+/// flight with velocity -e and no force, and no sample exceeds the maximum force.
+#[test]
+fn sampled_history() {
+    use mdr_impact::theory::reference::impact_sampled;
+    let pr = canonical(0.3, f64::INFINITY, 0.0);
+    let o = impact_sampled(&pr, 1e-11, 41).unwrap();
+    let hz = HertzImpact::canonical(4.0 * pr.relaxed).unwrap();
+    let h = o.history.unwrap();
+    assert_eq!(h.len(), 41);
+    for i in 0..h.len() {
+        let (d, v) = hz.state(h.t[i]).unwrap();
+        assert!(
+            (h.d[i] - d).abs() < 1e-10,
+            "t={}: {} vs {d}",
+            h.t[i],
+            h.d[i]
+        );
+        assert!(
+            (h.v[i] - v).abs() < 1e-9 || i == 0 || i == h.len() - 1,
+            "t={}",
+            h.t[i]
+        );
+        let f = hz.force_at_depth(d);
+        assert!(
+            (h.force[i] - f).abs() < 1e-9 * hz.max_force(),
+            "t={}",
+            h.t[i]
+        );
+    }
+    let pr = canonical(0.3, 0.1, 1.0);
+    let o = impact_sampled(&pr, 1e-10, 64).unwrap();
+    let h = o.history.unwrap();
+    let n = h.len() - 1;
+    assert!((h.v[n] + o.cor).abs() < 1e-12 && h.force[n].abs() < 1e-12);
+    assert!(h
+        .force
+        .iter()
+        .all(|&f| f <= o.max_force * (1.0 + 1e-12) && f >= 0.0));
+    assert!(impact_sampled(&pr, 1e-10, 1).is_err());
+}

@@ -32,7 +32,8 @@ fn cases() -> Vec<(&'static str, Prony)> {
     ]
 }
 
-/// Force (relative to the peak force), t1 and separation time agree to 1e-10 between the
+/// Force (relative to the peak force), t1 and separation time agree to 1e-12 (measured: 4e-14;
+/// the brief asks 1e-10) between the
 /// quadrature path and the closed form for the triangle.
 #[test]
 fn triangle_quadrature_matches_closed_form() {
@@ -44,7 +45,7 @@ fn triangle_quadrature_matches_closed_form() {
         let num = response(&prony, r, &h, &times).unwrap();
         let ts = separation_time(&prony, r, &h).unwrap();
         assert!(
-            (ts - ts_exact).abs() < 1e-10 * tp,
+            (ts - ts_exact).abs() < 1e-12 * tp,
             "{name}: ts {ts} vs {ts_exact}"
         );
         assert!(ts_exact > tp && ts_exact < 2.0 * tp, "{name}: {ts_exact}");
@@ -52,13 +53,13 @@ fn triangle_quadrature_matches_closed_form() {
         assert!(fmax > 0.0);
         for (a, b) in num.iter().zip(&exact) {
             assert!(
-                (a.force - b.force).abs() < 1e-10 * fmax,
+                (a.force - b.force).abs() < 1e-12 * fmax,
                 "{name} t={}: {} vs {}",
                 a.t,
                 a.force,
                 b.force
             );
-            assert!((a.t1 - b.t1).abs() < 1e-10 * tp, "{name} t={}: t1", a.t);
+            assert!((a.t1 - b.t1).abs() < 1e-12 * tp, "{name} t={}: t1", a.t);
             assert!(
                 (a.a - b.a).abs() < 1e-9 * (r * v * tp).sqrt(),
                 "{name} t={}",

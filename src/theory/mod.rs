@@ -10,7 +10,7 @@
 //! - [`roots`]: a safeguarded (bracketed) Newton iteration;
 //! - [`viscoelastic`]: Lee–Radok/Ting force for a prescribed indentation `d(t)` with one maximum,
 //!   by quadrature for any history and in closed form for the triangle (Dawson);
-//! - [`reference`]: the impact solved from the Lee–Radok/Ting formulation with exponential
+//! - [`reference`](mod@reference): the impact solved from the Lee–Radok/Ting formulation with exponential
 //!   collocation (not an element foundation);
 //! - [`files`]: the reference force histories written to `reference/`.
 //!

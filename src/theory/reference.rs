@@ -45,7 +45,7 @@
 // explicit index loops mirror the formulas. The Radau nodes keep their mpmath digits.
 #![allow(clippy::needless_range_loop, clippy::excessive_precision)]
 
-use super::roots::newton_bracketed;
+use super::roots::newton_bracketed_with;
 use super::special::exp_moments;
 use super::{REF_EVENT_TOL, REF_LOCAL_FACTOR, REF_MAX_NEWTON, REF_MAX_STEPS, REF_NEWTON_TOL};
 use crate::error::{check, Error, Result};
@@ -214,7 +214,12 @@ impl<'a> Solver<'a> {
             Err(0) => 0,
             Err(j) => j - 1,
         };
-        let r = &self.records[j];
+        self.eval_record(&self.records[j], t1)
+    }
+
+    /// `d, d', q_k, S_k` at `t1` inside the step of record `r` (`q_k` meaningful for compression
+    /// records only).
+    fn eval_record(&self, r: &Record, t1: f64) -> Dense {
         let th = ((t1 - r.t0) / r.h).clamp(0.0, 1.0);
         let mut d = 0.0;
         let mut dv = 0.0;
@@ -280,11 +285,12 @@ impl<'a> Solver<'a> {
         let t1 = if fm >= 0.0 {
             tm
         } else {
-            newton_bracketed(
+            // Phi(0) = psi > 0 and Phi(t_m) = fm < 0 are known: no need to re-evaluate them.
+            newton_bracketed_with(
                 "Ting t1 (reference impact)",
                 |x| Ok(phi_at(x)),
-                0.0,
-                tm,
+                (0.0, psi),
+                (tm, fm),
                 Some(guess.clamp(0.0, tm)),
                 1e-16 * tm,
             )?
@@ -602,7 +608,56 @@ fn grow(err: f64) -> f64 {
     }
 }
 
-fn run(prony: &Prony, tol: f64, want_history: bool) -> Result<Run> {
+/// Which samples of the history a run records.
+#[derive(Debug, Clone, PartialEq)]
+enum Sampling {
+    None,
+    StepEnds,
+    Times(Vec<f64>),
+}
+
+/// Record the requested output times inside the step of `rec` (dense evaluation).
+fn emit(
+    sv: &Solver,
+    hist: &mut Option<History>,
+    rec: &Record,
+    phase: Phase,
+    times: &[f64],
+    next: &mut usize,
+) -> Result<()> {
+    let Some(hh) = hist.as_mut() else {
+        return Ok(());
+    };
+    let mut guess = sv.t_m;
+    while *next < times.len() && times[*next] <= rec.t0 + rec.h {
+        let t = times[*next];
+        let de = sv.eval_record(rec, t);
+        match phase {
+            Phase::Compression => {
+                let mut f = sv.prony.relaxed * de.d.max(0.0).powf(1.5);
+                for (k, p) in sv.prony.terms.iter().enumerate() {
+                    f += p.coefficient * de.q[k];
+                }
+                hh.push(t, de.d, de.dv, 16.0 / 3.0 * f, de.d.max(0.0).sqrt());
+            }
+            Phase::Restitution => {
+                let (t1, d1, f) = sv.ting(t, de.d, &de.s, guess)?;
+                guess = t1;
+                hh.push(t, de.d, de.dv, f, d1.max(0.0).sqrt());
+            }
+        }
+        *next += 1;
+    }
+    Ok(())
+}
+
+fn run(prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
+    let want_history = *sampling == Sampling::StepEnds;
+    let out_times: &[f64] = match sampling {
+        Sampling::Times(t) => t,
+        _ => &[],
+    };
+    let mut next_out = 0usize;
     let mut sv = Solver::new(prony)?;
     let kk = prony.terms.len();
     let mut st = State {
@@ -618,12 +673,22 @@ fn run(prony: &Prony, tol: f64, want_history: bool) -> Result<Run> {
     if let Some(hh) = hist.as_mut() {
         hh.push(0.0, 0.0, 1.0, 0.0, 0.0);
     }
+    let mut samples = (!out_times.is_empty()).then(History::default);
+    while next_out < out_times.len() && out_times[next_out] <= 0.0 {
+        if let Some(hh) = samples.as_mut() {
+            hh.push(out_times[next_out], 0.0, 1.0, 0.0, 0.0);
+        }
+        next_out += 1;
+    }
     let mut f_max = 0.0f64;
     let mut f_max_t = 0.0f64;
     let mut h = H0;
     let mut steps = 0u64;
     let mut phase = Phase::Compression;
     let push = |hist: &mut Option<History>, s: &State, phase: Phase, sv: &mut Solver| {
+        if !want_history {
+            return;
+        }
         if let Some(hh) = hist.as_mut() {
             let a = match phase {
                 Phase::Compression => s.d.max(0.0).sqrt(),
@@ -675,6 +740,7 @@ fn run(prony: &Prony, tol: f64, want_history: bool) -> Result<Run> {
                 if phase == Phase::Compression {
                     sv.records.push(o.rec.clone());
                 }
+                emit(&sv, &mut samples, &o.rec, phase, out_times, &mut next_out)?;
             }
             push(&mut hist, &first.end, phase, &mut sv);
             push(&mut hist, &second.end, phase, &mut sv);
@@ -753,6 +819,22 @@ fn run(prony: &Prony, tol: f64, want_history: bool) -> Result<Run> {
             Phase::Compression => {
                 sv.records.push(first.rec.clone());
                 sv.records.push(second.rec.clone());
+                emit(
+                    &sv,
+                    &mut samples,
+                    &first.rec,
+                    phase,
+                    out_times,
+                    &mut next_out,
+                )?;
+                emit(
+                    &sv,
+                    &mut samples,
+                    &second.rec,
+                    phase,
+                    out_times,
+                    &mut next_out,
+                )?;
                 push(&mut hist, &first.end, phase, &mut sv);
                 second.end.v = 0.0;
                 push(&mut hist, &second.end, phase, &mut sv);
@@ -763,6 +845,32 @@ fn run(prony: &Prony, tol: f64, want_history: bool) -> Result<Run> {
                 h = hl.max(H0);
             }
             Phase::Restitution => {
+                emit(
+                    &sv,
+                    &mut samples,
+                    &first.rec,
+                    phase,
+                    out_times,
+                    &mut next_out,
+                )?;
+                emit(
+                    &sv,
+                    &mut samples,
+                    &second.rec,
+                    phase,
+                    out_times,
+                    &mut next_out,
+                )?;
+                // free flight after separation: d = d_end + v_end (t - t_end), no force
+                if let Some(hh) = samples.as_mut() {
+                    for &t in &out_times[next_out..] {
+                        let d = second.end.d + second.end.v * (t - second.end.t);
+                        hh.push(t, d, second.end.v, 0.0, 0.0);
+                    }
+                }
+                if samples.is_some() {
+                    hist = samples.take();
+                }
                 push(&mut hist, &first.end, phase, &mut sv);
                 second.end.force = 0.0;
                 second.end.t1 = 0.0;
@@ -797,7 +905,43 @@ fn run(prony: &Prony, tol: f64, want_history: bool) -> Result<Run> {
 /// Errors: [`Error::OutOfRange`] for `rtol` outside `[1e-13, 0.1]` or an invalid series,
 /// [`Error::AccuracyNotReached`] when the estimate stays above `rtol` after the refinement levels,
 /// and the step / iteration limits of the module.
+///
+/// ```
+/// # use mdr_impact::material::Prony;
+/// # use mdr_impact::theory::reference::impact;
+/// // Elastic, incompressible (G_eq = 1): Hertz with E* = 4, contact time 2 I (15/64)^(2/5).
+/// let o = impact(&Prony { relaxed: 1.0, terms: vec![] }, 1e-10, false).unwrap();
+/// assert!((o.cor - 1.0).abs() < 1e-12);
+/// let tc = 2.943_275_184_324_704_7 * (15.0f64 / 64.0).powf(0.4);
+/// assert!((o.contact_time - tc).abs() < 1e-10 * tc);
+/// ```
 pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
+    let sampling = if history {
+        Sampling::StepEnds
+    } else {
+        Sampling::None
+    };
+    solve(prony, rtol, sampling, 0)
+}
+
+/// As [`impact`], with the history sampled at `samples >= 2` equally spaced times over
+/// `[0, t_c]`, `t_c` the contact time of the first (coarser) run; samples after the final
+/// separation are free flight (`F = a = 0`, `d = d_end + v_end (t - t_end)`). Forces at the
+/// samples are evaluated from the dense record (compression: `q_k` exactly integrated over the
+/// partial step; restitution: Ting's root at that time), so the sample grid does not depend on the
+/// adaptive steps.
+pub fn impact_sampled(prony: &Prony, rtol: f64, samples: usize) -> Result<Outcome> {
+    if samples < 2 {
+        return Err(Error::OutOfRange {
+            field: "samples",
+            value: samples as f64,
+            allowed: "samples >= 2",
+        });
+    }
+    solve(prony, rtol, Sampling::None, samples)
+}
+
+fn solve(prony: &Prony, rtol: f64, sampling: Sampling, samples: usize) -> Result<Outcome> {
     check(
         "rtol",
         rtol,
@@ -820,7 +964,17 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
         )?;
     }
     let mut tol = (REF_LOCAL_FACTOR * rtol).max(MIN_LOCAL_TOL);
-    let mut coarse = run(prony, tol, false)?;
+    let mut coarse = run(prony, tol, &Sampling::None)?;
+    let sampling = if samples >= 2 {
+        let tc = coarse.t_end;
+        Sampling::Times(
+            (0..samples)
+                .map(|i| tc * i as f64 / (samples - 1) as f64)
+                .collect(),
+        )
+    } else {
+        sampling
+    };
     let mut work = Work {
         steps: coarse.steps,
         evaluations: coarse.evals,
@@ -829,7 +983,7 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
     let mut est = f64::INFINITY;
     for level in 1..=MAX_LEVELS {
         tol = (tol / LEVEL_RATIO).max(MIN_LOCAL_TOL);
-        let fine = run(prony, tol, history)?;
+        let fine = run(prony, tol, &sampling)?;
         work.steps += fine.steps;
         work.evaluations += fine.evals;
         work.levels = level;

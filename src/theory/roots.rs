@@ -21,10 +21,26 @@ where
     F: FnMut(f64) -> Result<(f64, f64)>,
 {
     let (flo, _) = f(lo)?;
+    let (fhi, _) = f(hi)?;
+    newton_bracketed_with(what, f, (lo, flo), (hi, fhi), x0, xtol)
+}
+
+/// As [`newton_bracketed`] with the values at the bracket ends already known:
+/// `(lo, f(lo))`, `(hi, f(hi))`.
+pub fn newton_bracketed_with<F>(
+    what: &'static str,
+    mut f: F,
+    (lo, flo): (f64, f64),
+    (hi, fhi): (f64, f64),
+    x0: Option<f64>,
+    xtol: f64,
+) -> Result<f64>
+where
+    F: FnMut(f64) -> Result<(f64, f64)>,
+{
     if flo == 0.0 {
         return Ok(lo);
     }
-    let (fhi, _) = f(hi)?;
     if fhi == 0.0 {
         return Ok(hi);
     }
