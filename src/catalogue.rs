@@ -88,10 +88,34 @@ pub const IMPACTS: &[Case] = &[
     case!("dissipative-nu045", Dissipative, 0.45, 0.01, 1.0),
     case!("dissipative-incompressible", Dissipative, 0.5, 0.01, 1.0),
     case!("dissipative-nu03", Dissipative, 0.3, 0.1, 0.5),
-    case!("near-incompressible-nu049", NearIncompressible, 0.49, 0.001, 10.0),
-    case!("near-incompressible-nu0499", NearIncompressible, 0.499, 0.01, 1.0),
-    case!("near-incompressible-nu0499-p2-1e-3", NearIncompressible, 0.499, 0.001, 10.0),
-    case!("compressible-nu0-p2-0.1", StronglyCompressible, 0.0, 0.1, 1.0),
+    case!(
+        "near-incompressible-nu049",
+        NearIncompressible,
+        0.49,
+        0.001,
+        10.0
+    ),
+    case!(
+        "near-incompressible-nu0499",
+        NearIncompressible,
+        0.499,
+        0.01,
+        1.0
+    ),
+    case!(
+        "near-incompressible-nu0499-p2-1e-3",
+        NearIncompressible,
+        0.499,
+        0.001,
+        10.0
+    ),
+    case!(
+        "compressible-nu0-p2-0.1",
+        StronglyCompressible,
+        0.0,
+        0.1,
+        1.0
+    ),
     case!("compressible-nu-05", StronglyCompressible, -0.5, 0.01, 1.0),
     case!("compressible-nu-09", StronglyCompressible, -0.9, 0.001, 3.0),
     case!("stiff-tau-1e-5", Stiff, 0.45, 1e-3, 1e-2),
@@ -119,7 +143,10 @@ mod tests {
             c.impact().unwrap();
         }
         for r in Regime::ALL {
-            assert!(IMPACTS.iter().filter(|c| c.regime == r).count() >= 3, "{r:?}");
+            assert!(
+                IMPACTS.iter().filter(|c| c.regime == r).count() >= 3,
+                "{r:?}"
+            );
         }
     }
 }

@@ -5,6 +5,7 @@ use crate::error::{Error, Result};
 use crate::impact::{Impact, Outcome};
 use crate::material::ElementNetwork;
 use crate::mdr;
+use crate::theory;
 use crate::tolerances;
 
 /// The available impact solvers.
@@ -130,6 +131,15 @@ impl SolveOptions {
 /// Solve an impact. Elastic materials use the Hertz closed form whatever the solver.
 pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
     opts.validate()?;
+    if impact.material().is_elastic() && opts.resolution.is_none() {
+        // nothing to integrate: the Hertz closed form is exact
+        let o = theory::hertz_outcome(
+            impact,
+            opts.history.then_some(tolerances::HERTZ_HISTORY_SAMPLES),
+        )?;
+        check_outcome(&o)?;
+        return Ok(o);
+    }
     let canonical = solve_canonical(impact, opts)?;
     check_outcome(&canonical)?;
     Ok(canonical.to_si(impact))
@@ -150,9 +160,7 @@ fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
         SolverKind::MdrEuler => mdr::Scheme::Euler,
         SolverKind::Mdr | SolverKind::Auto => mdr::Scheme::Exponential,
         SolverKind::Reference => {
-            return Err(Error::Unsupported(
-                "solver 'reference' is not available yet".into(),
-            ))
+            return theory::impact(&material.prony, opts.rtol, opts.history);
         }
     };
     match opts.resolution {

@@ -29,3 +29,7 @@ pub const MDR_MAX_ELEMENT_UPDATES: u64 = 4_000_000_000;
 pub const INDENT_ELEMENTS: usize = 2000;
 /// Default time steps over a prescribed indentation history.
 pub const INDENT_STEPS: usize = 4000;
+/// Samples of the Hertz closed-form history when an elastic impact's history is requested.
+pub const HERTZ_HISTORY_SAMPLES: usize = 401;
+/// Safety factor of the adaptive MDR driver: the error estimate must be below this times rtol.
+pub const MDR_SAFETY: f64 = 0.5;

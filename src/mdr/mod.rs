@@ -562,16 +562,46 @@ pub fn run_resolution(
     }
 }
 
+/// Error estimate of the finest level from the signed CoR differences between successive
+/// levels, or `None` while the sequence does not look asymptotic.
+///
+/// The last three differences must share their sign and shrink by ratios between `sqrt 2` and
+/// `2^(p_max + 1)` (`p_max` the scheme's order): MDR sequences have pre-asymptotic plateaus and
+/// sign changes (the element sum and the contact-edge events interact), and a single small
+/// difference there is an accident, not convergence. The estimate is `delta_L / (2^p - 1)`
+/// with `p` the observed order `log2` of the last ratio, floored at 1 (where relaxation is fast
+/// against the impact the force density jumps at the contact edge and the element sum converges
+/// at first order only). When the last two differences are both below `tiny` / 100 the
+/// sequence is at round-off and the larger of them is the estimate.
+fn accept(deltas: &[f64], p_max: f64, tiny: f64) -> Option<f64> {
+    let n = deltas.len();
+    if n >= 2 && deltas[n - 1].abs().max(deltas[n - 2].abs()) <= 0.01 * tiny {
+        return Some(deltas[n - 1].abs().max(deltas[n - 2].abs()));
+    }
+    if n < 3 {
+        return None;
+    }
+    let (d0, d1, d2) = (deltas[n - 3], deltas[n - 2], deltas[n - 1]);
+    if d0.signum() != d1.signum() || d1.signum() != d2.signum() || d2 == 0.0 {
+        return None;
+    }
+    let p_max = p_max.max(1.0);
+    let (lo, hi) = (2f64.sqrt(), 2f64.powf(p_max + 1.0));
+    let (r1, r2) = (d0 / d1, d1 / d2);
+    if !(lo..=hi).contains(&r1) || !(lo..=hi).contains(&r2) {
+        return None;
+    }
+    let order = r2.log2().clamp(1.0, p_max);
+    Some(d2.abs() / (2f64.powf(order) - 1.0))
+}
+
 /// Solve an impact with an MDR scheme to a requested relative accuracy of the CoR.
 ///
 /// Adaptive refinement from a pilot layout: each level doubles the steps per contact time
 /// (and, for the second-order [`Scheme::Exponential`], the elements; for [`Scheme::Euler`],
 /// the elements every other level, since its time error is first order). With `delta_L` the
-/// change of the CoR between levels and `p` the observed order `log2(delta_{L-1} / delta_L)`
-/// (clamped to `[1, time order]`), the error estimate of the finest level is
-/// `delta_L / (2^p - 1)`; a level is accepted when this and the previous level's estimate
-/// scaled to this level are both `<= rtol |e|` (two consistent differences guard against an
-/// accidental small one).
+/// change of the CoR between levels, a level is accepted when the differences look asymptotic
+/// and the error estimate of [`accept`] is below `MDR_SAFETY * rtol |e|`.
 ///
 /// In nearly elastic cases the discretisation error can push the CoR of the foundation above 1;
 /// since `e <= 1` holds exactly (the dissipation is non-negative), the accepted value is
@@ -602,7 +632,7 @@ pub fn solve_rtol(
     }
     let mut work = Work::default();
     let mut prev: Option<f64> = None;
-    let mut prev_delta: Option<f64> = None;
+    let mut deltas: Vec<f64> = Vec::new();
     let mut last_est = f64::INFINITY;
     for level in 0..tolerances::MDR_MAX_LEVELS {
         let predicted =
@@ -622,27 +652,20 @@ pub fn solve_rtol(
         work.elements = work.elements.max(o.work.elements);
         work.levels = level + 1;
         if let Some(p) = prev {
-            let delta = (o.cor - p).abs();
+            deltas.push(o.cor - p);
             let scale = o.cor.abs().max(1e-300);
-            if let Some(pd) = prev_delta {
-                // Observed order from two successive differences, floored at 1: where relaxation
-                // is fast against the impact the force density jumps at the contact edge and the
-                // element sum converges at first order only; the estimate must not assume more.
-                let order = (pd / delta.max(1e-300))
-                    .log2()
-                    .clamp(1.0, scheme.time_order().max(1.0));
-                let est = delta / (2f64.powf(order) - 1.0);
+            if let Some(est) = accept(&deltas, scheme.time_order(), rtol * scale) {
                 last_est = est / scale;
-                let consistent = pd / (2f64.powf(order) - 1.0) / 2f64.powf(order) <= rtol * scale;
-                if est <= rtol * scale && consistent {
+                if est <= tolerances::MDR_SAFETY * rtol * scale {
                     o.work = work;
                     o.cor_error_estimate = Some(last_est);
                     o.cor = o.cor.min(1.0);
                     o.dissipated_energy = 0.5 * (1.0 - o.cor * o.cor);
                     return Ok(o);
                 }
+            } else if let Some(&d) = deltas.last() {
+                last_est = d.abs() / scale;
             }
-            prev_delta = Some(delta);
         }
         prev = Some(o.cor);
         m *= 2;

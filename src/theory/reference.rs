@@ -643,13 +643,23 @@ fn emit(
             Phase::Restitution => {
                 let (t1, d1, f) = sv.ting(t, de.d, &de.s, guess)?;
                 guess = t1;
-                hh.push(t, de.d, de.dv, f, d1.max(0.0).sqrt());
+                // At the end of contact t1 -> 0 and sqrt(d(t1)) magnifies the root's round-off
+                // (t1 ~ 1e-15 gives a ~ 3e-8): below END_T1 t_m the sample is the end of contact.
+                let a = if t1 > END_T1 * sv.t_m {
+                    d1.max(0.0).sqrt()
+                } else {
+                    0.0
+                };
+                hh.push(t, de.d, de.dv, f, a);
             }
         }
         *next += 1;
     }
     Ok(())
 }
+
+/// `t1 / t_m` below which a restitution sample is taken as the end of contact (`a = 0`).
+const END_T1: f64 = 1e-9;
 
 fn run(prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
     let want_history = *sampling == Sampling::StepEnds;
