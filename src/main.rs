@@ -5,8 +5,11 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+use mdr_impact::indentation::Prescribed;
+use mdr_impact::solver::{force_curve, IndentMethod};
 use mdr_impact::{
-    batch, output, plot, scene::Scene, solve, Error, Groups, Impact, SolveOptions, SolverKind,
+    batch, output, plot, scene::Scene, solve, Error, Groups, Impact, Material, SolveOptions,
+    SolverKind,
 };
 
 #[derive(Parser)]
@@ -52,6 +55,45 @@ enum Command {
         /// Requested relative accuracy of the CoR.
         #[arg(long, default_value_t = mdr_impact::tolerances::DEFAULT_RTOL)]
         rtol: f64,
+    },
+    /// Force curve of a prescribed indentation (AFM / nanoindentation): CSV t,d,a,force on stdout.
+    Indent {
+        /// triangle (d = V t up to T, then V (2T - t)) or half-sine (d = V T sin(pi t / 2T)).
+        #[arg(long)]
+        history: String,
+        /// Rate V (m/s).
+        #[arg(long)]
+        rate: f64,
+        /// Time of the peak T (s).
+        #[arg(long = "peak-time")]
+        peak_time: f64,
+        /// Sphere radius R (m).
+        #[arg(long)]
+        radius: f64,
+        /// Relaxed shear modulus G_inf (Pa).
+        #[arg(long = "g-inf")]
+        g_inf: f64,
+        /// Relaxing shear modulus G_1 (Pa).
+        #[arg(long)]
+        g1: f64,
+        /// Shear viscosity eta (Pa s).
+        #[arg(long)]
+        eta: f64,
+        /// Static Poisson ratio, -1 < nu <= 0.5 (0.5 = incompressible).
+        #[arg(long, allow_hyphen_values = true)]
+        nu: f64,
+        /// theory (Lee-Radok/Ting) or mdr.
+        #[arg(long, default_value = "theory")]
+        solver: String,
+        /// Output times (s), comma separated; default: 101 uniform points over [0, 2T].
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        times: Option<Vec<f64>>,
+    },
+    /// Regenerate the reference force histories and their manifest.
+    Reference {
+        /// Output folder.
+        #[arg(long, default_value = "reference")]
+        out: PathBuf,
     },
 }
 
@@ -120,6 +162,59 @@ fn run(cli: Cli) -> Result<(), Error> {
                 let o = solve(&impact, &opts)?;
                 println!("{}", o.cor);
             }
+            Ok(())
+        }
+        Command::Indent {
+            history,
+            rate,
+            peak_time,
+            radius,
+            g_inf,
+            g1,
+            eta,
+            nu,
+            solver,
+            times,
+        } => {
+            let method = solver.parse::<IndentMethod>()?;
+            let material = Material::with_poisson(g_inf, g1, eta, nu)?;
+            let history = match history.as_str() {
+                "triangle" => Prescribed::triangle(rate, peak_time)?,
+                "half-sine" => Prescribed::half_sine(rate, peak_time)?,
+                other => {
+                    return Err(Error::Unsupported(format!(
+                        "unknown history '{other}': expected triangle or half-sine"
+                    )))
+                }
+            };
+            let times = match times {
+                Some(t) => t,
+                None => (0..=100)
+                    .map(|i| 2.0 * peak_time * i as f64 / 100.0)
+                    .collect(),
+            };
+            let rows = force_curve(&material, radius, &history, &times, method)?;
+            let mut out = String::from("t,d,a,force\n");
+            for r in rows {
+                out.push_str(&format!(
+                    "{},{},{},{}\n",
+                    output::fmt(r.t),
+                    output::fmt(r.d),
+                    output::fmt(r.a),
+                    output::fmt(r.force)
+                ));
+            }
+            std::io::stdout()
+                .write_all(out.as_bytes())
+                .map_err(|e| Error::io("<stdout>", e))
+        }
+        Command::Reference { out } => {
+            let written = mdr_impact::theory::generate_reference(&out)?;
+            println!(
+                "wrote {} files and {}",
+                written.files.len(),
+                written.manifest.display()
+            );
             Ok(())
         }
     }

@@ -203,3 +203,81 @@ fn check_outcome(o: &Outcome) -> Result<()> {
     }
     Ok(())
 }
+
+/// Which method computes a prescribed-indentation force curve.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum IndentMethod {
+    /// Lee–Radok/Ting by quadrature ([`theory::response`]).
+    Theory,
+    /// The MDR foundation driven by the prescribed indentation ([`mdr::indent::response`]).
+    Mdr,
+}
+
+impl std::str::FromStr for IndentMethod {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self> {
+        match s {
+            "theory" => Ok(IndentMethod::Theory),
+            "mdr" => Ok(IndentMethod::Mdr),
+            _ => Err(Error::Unsupported(format!(
+                "unknown indentation solver '{s}': expected theory or mdr"
+            ))),
+        }
+    }
+}
+
+/// One row of a force curve: time (s), depth (m), contact radius (m), force (N).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ForceCurveRow {
+    /// Time (s).
+    pub t: f64,
+    /// Prescribed depth (m).
+    pub d: f64,
+    /// Contact radius (m), 0 after separation.
+    pub a: f64,
+    /// Contact force (N), 0 after separation.
+    pub force: f64,
+}
+
+/// Force curve of a rigid sphere of radius `radius` (m) pressed into `material` along `history`
+/// (SI), at `times` (s, sorted), by Lee–Radok/Ting theory or by the displacement-driven MDR.
+pub fn force_curve(
+    material: &crate::material::Material,
+    radius: f64,
+    history: &crate::indentation::Prescribed,
+    times: &[f64],
+    method: IndentMethod,
+) -> Result<Vec<ForceCurveRow>> {
+    let prony = material.equivalent_relaxation();
+    let rows: Vec<ForceCurveRow> = match method {
+        IndentMethod::Theory => theory::response(&prony, radius, history, times)?
+            .into_iter()
+            .map(|s| ForceCurveRow {
+                t: s.t,
+                d: s.d,
+                a: s.a,
+                force: s.force,
+            })
+            .collect(),
+        IndentMethod::Mdr => {
+            mdr::indent::response(&prony, radius, history, times, Default::default())?
+                .into_iter()
+                .map(|s| ForceCurveRow {
+                    t: s.t,
+                    d: s.d,
+                    a: s.a,
+                    force: s.force,
+                })
+                .collect()
+        }
+    };
+    for r in &rows {
+        if !(r.force.is_finite() && r.a.is_finite()) {
+            return Err(Error::NonFinite {
+                what: "force curve",
+                value: r.force,
+            });
+        }
+    }
+    Ok(rows)
+}

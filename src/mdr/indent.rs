@@ -118,11 +118,12 @@ pub fn response(
             continue;
         }
         let n_sub = (span / dt_target).ceil().max(1.0) as usize;
+        let t_start = t;
         for j in 1..=n_sub {
             let t1 = if j == n_sub {
                 node
             } else {
-                t + span * j as f64 / n_sub as f64
+                t_start + span * j as f64 / n_sub as f64
             };
             let d1 = history.depth(t1);
             let dt = t1 - t;
