@@ -28,6 +28,7 @@ pub mod scene;
 pub mod solver;
 pub mod theory;
 pub mod tolerances;
+pub mod validate;
 
 pub use error::{Error, Result};
 pub use impact::{Groups, History, Impact, Outcome, Sphere, Work};

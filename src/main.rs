@@ -8,8 +8,8 @@ use clap::{Parser, Subcommand};
 use mdr_impact::indentation::Prescribed;
 use mdr_impact::solver::{force_curve, IndentMethod};
 use mdr_impact::{
-    batch, output, plot, scene::Scene, solve, Error, Groups, Impact, Material, SolveOptions,
-    SolverKind,
+    batch, output, plot, scene::Scene, solve, validate, Error, Groups, Impact, Material,
+    SolveOptions, SolverKind,
 };
 
 #[derive(Parser)]
@@ -89,6 +89,18 @@ enum Command {
         #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
         times: Option<Vec<f64>>,
     },
+    /// Run the validation catalogue and write VALIDATION.md with its figures.
+    Validate {
+        /// The report to write.
+        #[arg(long, default_value = "VALIDATION.md")]
+        out: PathBuf,
+        /// Folder of the figures.
+        #[arg(long, default_value = "validation")]
+        figures: PathBuf,
+        /// Do not write: fail when the committed report differs from a fresh run.
+        #[arg(long)]
+        check: bool,
+    },
     /// Regenerate the reference force histories and their manifest.
     Reference {
         /// Output folder.
@@ -106,6 +118,22 @@ fn main() -> ExitCode {
             ExitCode::from(1)
         }
     }
+}
+
+/// A progress bar on a terminal; hidden when stderr is not a terminal or under CI.
+fn progress_bar(len: u64, what: &str) -> indicatif::ProgressBar {
+    use std::io::IsTerminal;
+    if !std::io::stderr().is_terminal() || std::env::var_os("CI").is_some() {
+        return indicatif::ProgressBar::hidden();
+    }
+    let bar = indicatif::ProgressBar::new(len);
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} {elapsed}")
+    {
+        bar.set_style(style.progress_chars("=> "));
+    }
+    bar.set_message(what.to_string());
+    bar
 }
 
 fn run(cli: Cli) -> Result<(), Error> {
@@ -207,6 +235,44 @@ fn run(cli: Cli) -> Result<(), Error> {
             std::io::stdout()
                 .write_all(out.as_bytes())
                 .map_err(|e| Error::io("<stdout>", e))
+        }
+        Command::Validate {
+            out,
+            figures,
+            check,
+        } => {
+            let bar = progress_bar(validate::units(), "validate");
+            let figure_dir = if check {
+                std::env::temp_dir().join("mdr-impact-validate-check")
+            } else {
+                figures
+            };
+            let markdown_dir = out.parent().map(PathBuf::from).unwrap_or_default();
+            let opts = validate::ValidateOptions {
+                figure_dir,
+                markdown_dir,
+            };
+            let fresh = validate::run(&opts, &|| bar.inc(1))?;
+            bar.finish_and_clear();
+            let existing = std::fs::read_to_string(&out).unwrap_or_default();
+            if check {
+                let fresh = fresh.replace(&opts.figure_dir.display().to_string(), "validation");
+                if validate::without_performance(&fresh) != validate::without_performance(&existing)
+                {
+                    return Err(Error::Unsupported(format!(
+                        "{} is stale: run `mdr-impact validate` and commit the result",
+                        out.display()
+                    )));
+                }
+                println!("{} is current", out.display());
+            } else {
+                let text = validate::keep_performance(&fresh, &existing);
+                output::write_atomic(&out, |w| {
+                    w.write_all(text.as_bytes()).map_err(|e| Error::io(&out, e))
+                })?;
+                println!("wrote {}", out.display());
+            }
+            Ok(())
         }
         Command::Reference { out } => {
             let written = mdr_impact::theory::generate_reference(&out)?;

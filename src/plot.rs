@@ -85,6 +85,7 @@ pub fn line_chart_svg(
         if series.len() > 1 {
             chart
                 .configure_series_labels()
+                .position(SeriesLabelPosition::UpperRight)
                 .border_style(BLACK)
                 .background_style(WHITE.mix(0.8))
                 .draw()

@@ -16,6 +16,7 @@
 //!
 //! Every tolerance used by this module is a named constant below.
 
+pub mod asymptotes;
 pub mod files;
 pub mod hertz;
 pub mod quad;
