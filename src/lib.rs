@@ -17,6 +17,7 @@
 
 pub mod batch;
 pub mod error;
+pub mod figures;
 pub mod impact;
 pub mod indentation;
 pub mod material;
@@ -25,6 +26,7 @@ pub mod output;
 pub mod plot;
 pub mod scene;
 pub mod solver;
+pub mod sweep;
 pub mod theory;
 pub mod tolerances;
 
