@@ -18,6 +18,7 @@
 pub mod batch;
 pub mod catalogue;
 pub mod error;
+pub mod figures;
 pub mod impact;
 pub mod indentation;
 pub mod material;
@@ -26,6 +27,7 @@ pub mod output;
 pub mod plot;
 pub mod scene;
 pub mod solver;
+pub mod sweep;
 pub mod theory;
 pub mod tolerances;
 pub mod validate;

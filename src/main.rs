@@ -107,6 +107,44 @@ enum Command {
         #[arg(long, default_value = "reference")]
         out: PathBuf,
     },
+    /// CoR over a grid or random sample of (nu, p2, p3); rows appended to a CSV, resumable.
+    Sweep {
+        /// Static Poisson ratios, comma-separated, in (-1, 0.5]; 'inc' = 0.5 (incompressible).
+        #[arg(long, default_value = "0.45", allow_hyphen_values = true)]
+        nu: String,
+        /// log10 p2 grid as MIN:MAX:N (MIN:MAX is enough with --random).
+        #[arg(long, default_value = "-3:1:41", allow_hyphen_values = true)]
+        log_p2: String,
+        /// log10 p3 grid as MIN:MAX:N (MIN:MAX is enough with --random).
+        #[arg(long, default_value = "-2:3:51", allow_hyphen_values = true)]
+        log_p3: String,
+        /// Random sample of N points instead of the grid.
+        #[arg(long, value_name = "N")]
+        random: Option<usize>,
+        /// Seed of the random sample and of the dimensional inputs.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Solver name (auto, mdr, mdr-euler, ...).
+        #[arg(long, default_value = "auto")]
+        solver: String,
+        /// Requested relative accuracy of each CoR.
+        #[arg(long, default_value_t = mdr_impact::sweep::DEFAULT_SWEEP_RTOL)]
+        rtol: f64,
+        /// Output CSV; rows already there are kept and their points skipped (resume).
+        #[arg(long)]
+        out: PathBuf,
+        /// Random dimensional inputs (m, R, v0, G_inf drawn) instead of canonical units.
+        #[arg(long)]
+        dimensional: bool,
+        /// With --dimensional, also solve every K-th point in canonical units (0: never).
+        #[arg(long, value_name = "K", default_value_t = mdr_impact::sweep::DEFAULT_CHECK_EVERY)]
+        check_every: u64,
+        /// Discard the rows already in the output file instead of resuming.
+        #[arg(long)]
+        fresh: bool,
+    },
+    /// Regenerate the paper's figures (SVG), the data behind them (CSV) and the result tables.
+    Figures(mdr_impact::figures::FigureArgs),
 }
 
 fn main() -> ExitCode {
@@ -281,6 +319,50 @@ fn run(cli: Cli) -> Result<(), Error> {
                 written.files.len(),
                 written.manifest.display()
             );
+            Ok(())
+        }
+        Command::Sweep {
+            nu,
+            log_p2,
+            log_p3,
+            random,
+            seed,
+            solver,
+            rtol,
+            out,
+            dimensional,
+            check_every,
+            fresh,
+        } => {
+            use mdr_impact::sweep;
+            let plan = sweep::Plan {
+                nu: sweep::parse_nu_list(&nu)?,
+                log_p2: sweep::LogRange::parse("log-p2", &log_p2)?,
+                log_p3: sweep::LogRange::parse("log-p3", &log_p3)?,
+                sampling: match random {
+                    Some(n) => sweep::Sampling::Random { n, seed },
+                    None => sweep::Sampling::Grid,
+                },
+            };
+            let opts = sweep::SweepOptions {
+                solve: SolveOptions {
+                    solver: solver.parse::<SolverKind>()?,
+                    rtol,
+                    ..Default::default()
+                },
+                dimensional: dimensional.then_some(seed),
+                check_every,
+                progress: true,
+                resume: !fresh,
+            };
+            let summary = sweep::run(&plan.points()?, &out, &opts)?;
+            println!("{summary}");
+            println!("rows in {}", out.display());
+            Ok(())
+        }
+        Command::Figures(args) => {
+            let report = mdr_impact::figures::run(&args)?;
+            print!("{report}");
             Ok(())
         }
     }
