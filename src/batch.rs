@@ -105,3 +105,28 @@ pub fn write_results(w: &mut dyn Write, rows: &[Row], outcomes: &[Outcome]) -> R
     c.flush().map_err(|e| Error::io("<stdout>", e))?;
     Ok(())
 }
+
+/// `n` pseudo-random rows over the paper's range (nu in (-1, 0.5], log10 p2 in [-4, 2],
+/// log10 p3 in [-3, 4]), reproducible from `seed` (for benchmarks).
+pub fn random_rows(n: usize, seed: u64) -> Result<Vec<Row>> {
+    let mut state = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+    let mut uniform = move || {
+        // xorshift64*
+        state ^= state >> 12;
+        state ^= state << 25;
+        state ^= state >> 27;
+        (state.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
+    };
+    (0..n)
+        .map(|i| {
+            let nu = 0.5 - 1.49 * uniform();
+            let p2 = 10f64.powf(-4.0 + 6.0 * uniform());
+            let p3 = 10f64.powf(-3.0 + 7.0 * uniform());
+            Ok(Row {
+                line: i as u64 + 2,
+                text: [nu.to_string(), p2.to_string(), p3.to_string()],
+                groups: Groups::new(nu, p2, p3)?,
+            })
+        })
+        .collect()
+}

@@ -16,6 +16,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod batch;
+pub mod bench;
 pub mod catalogue;
 pub mod error;
 pub mod figures;

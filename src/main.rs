@@ -101,6 +101,24 @@ enum Command {
         #[arg(long)]
         check: bool,
     },
+    /// Work-precision benchmark of every solver; writes CSV, plot and the performance section.
+    Bench {
+        /// One case, one setting per solver, no report update (CI smoke test).
+        #[arg(long)]
+        quick: bool,
+        /// Folder for bench.csv and work-precision.svg.
+        #[arg(long, default_value = "validation")]
+        out: PathBuf,
+        /// Report whose performance section is replaced (not with --quick).
+        #[arg(long, default_value = "VALIDATION.md")]
+        report: PathBuf,
+        /// Seconds of repeats per timed point.
+        #[arg(long, default_value_t = 0.3)]
+        budget: f64,
+        /// Also time `cor --input` on this many random rows (0: skip).
+        #[arg(long, default_value_t = 0)]
+        batch_rows: usize,
+    },
     /// Regenerate the reference force histories and their manifest.
     Reference {
         /// Output folder.
@@ -309,6 +327,53 @@ fn run(cli: Cli) -> Result<(), Error> {
                     w.write_all(text.as_bytes()).map_err(|e| Error::io(&out, e))
                 })?;
                 println!("wrote {}", out.display());
+            }
+            Ok(())
+        }
+        Command::Bench {
+            quick,
+            out,
+            report,
+            budget,
+            batch_rows,
+        } => {
+            use mdr_impact::bench;
+            let bar = progress_bar(bench::units(quick), "bench");
+            let points = bench::run(quick, budget, &|| bar.inc(1))?;
+            bar.finish_and_clear();
+            for p in &points {
+                println!(
+                    "{:<10} rtol={:<6.0e} {:<28} {:>12}  cor err {:.1e}  force err {:.1e}",
+                    p.solver.name(),
+                    p.rtol,
+                    p.case,
+                    bench::fmt_time(p.median_seconds),
+                    p.cor_error,
+                    p.force_error
+                );
+            }
+            bench::write_csv(&out.join("bench.csv"), &points)?;
+            bench::plot(&out.join("work-precision.svg"), &points)?;
+            let batch = if batch_rows > 0 {
+                let rows = batch::random_rows(batch_rows, 1)?;
+                let t0 = std::time::Instant::now();
+                batch::solve_rows("random", &rows, &SolveOptions::default())?;
+                let secs = t0.elapsed().as_secs_f64();
+                println!("cor --input path: {batch_rows} rows in {secs:.2} s");
+                Some((batch_rows, secs))
+            } else {
+                None
+            };
+            if !quick {
+                let existing =
+                    std::fs::read_to_string(&report).map_err(|e| Error::io(&report, e))?;
+                let section = bench::summary(&points, &bench::machine(), batch);
+                let text = validate::replace_performance(&existing, &section)?;
+                output::write_atomic(&report, |w| {
+                    w.write_all(text.as_bytes())
+                        .map_err(|e| Error::io(&report, e))
+                })?;
+                println!("performance section of {} updated", report.display());
             }
             Ok(())
         }

@@ -976,6 +976,20 @@ pub fn keep_performance(fresh: &str, existing: &str) -> String {
     }
 }
 
+/// Replace the body of the performance section of `existing` with `section`.
+pub fn replace_performance(existing: &str, section: &str) -> Result<String> {
+    match (existing.find(PERF_BEGIN), existing.find(PERF_END)) {
+        (Some(b), Some(e)) if b < e => Ok(format!(
+            "{}{PERF_BEGIN}\n{section}{}",
+            &existing[..b],
+            &existing[e..]
+        )),
+        _ => Err(Error::Unsupported(format!(
+            "the report has no performance markers ({PERF_BEGIN} ... {PERF_END}); run `mdr-impact validate` first"
+        ))),
+    }
+}
+
 /// Strip the performance section (for comparisons).
 pub fn without_performance(s: &str) -> String {
     match (s.find(PERF_BEGIN), s.find(PERF_END)) {

@@ -1,0 +1,316 @@
+//! Work-precision benchmark: time per impact against CoR error and force-history error, for
+//! every solver over a sweep of requested accuracies, on one catalogue case per regime.
+//!
+//! Timing runs solve CoR-only (no histories), as a user asking for the CoR would, and report
+//! the median over repeats; the errors are computed afterwards, outside the timed region,
+//! against the reference solver at rtol 1e-11 (CoR) and its history sampled on 40001 points
+//! and interpolated with cubic Hermite (force).
+
+use std::fmt::Write as _;
+use std::path::Path;
+use std::time::Instant;
+
+use crate::catalogue::{impact_case, Case};
+use crate::error::{Error, Result};
+use crate::impact::Outcome;
+use crate::output::write_atomic;
+use crate::solver::{solve, SolveOptions, SolverKind};
+use crate::theory;
+
+/// One measured point of the work-precision diagram.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BenchPoint {
+    /// Solver.
+    pub solver: SolverKind,
+    /// Requested rtol.
+    pub rtol: f64,
+    /// Catalogue case id.
+    pub case: &'static str,
+    /// Regime name.
+    pub regime: &'static str,
+    /// Median wall time per impact (s).
+    pub median_seconds: f64,
+    /// Repeats timed.
+    pub repeats: usize,
+    /// Relative CoR error against the reference.
+    pub cor_error: f64,
+    /// Max |F - F_ref| / max F_ref over the solver's history samples.
+    pub force_error: f64,
+}
+
+/// The accuracy sweep of each solver.
+pub fn sweep(quick: bool) -> Vec<(SolverKind, Vec<f64>)> {
+    if quick {
+        return vec![
+            (SolverKind::MdrEuler, vec![1e-2]),
+            (SolverKind::Mdr, vec![1e-3]),
+            (SolverKind::Reference, vec![1e-6]),
+        ];
+    }
+    vec![
+        (SolverKind::MdrEuler, vec![1e-2, 3e-3, 1e-3, 3e-4, 1e-4]),
+        (SolverKind::Mdr, vec![1e-3, 1e-4, 1e-5, 1e-6, 1e-7]),
+        (SolverKind::Reference, vec![1e-4, 1e-6, 1e-8, 1e-10]),
+    ]
+}
+
+/// One case per regime.
+pub fn cases(quick: bool) -> Vec<&'static Case> {
+    let ids: &[&str] = if quick {
+        &["dissipative-nu045"]
+    } else {
+        &[
+            "elastic-slow-relaxation",
+            "dissipative-nu045",
+            "near-incompressible-nu049",
+            "compressible-nu-09",
+            "stiff-dissipative",
+        ]
+    };
+    ids.iter().filter_map(|id| impact_case(id)).collect()
+}
+
+/// Median wall time of `f` over repeats: at least 3 (1 when a single run exceeds `budget`),
+/// at most 101, stopping once `budget` seconds have been spent.
+pub fn median_time(budget: f64, mut f: impl FnMut() -> Result<()>) -> Result<(f64, usize)> {
+    let mut times = Vec::new();
+    let start = Instant::now();
+    while times.len() < 101 {
+        let t0 = Instant::now();
+        f()?;
+        times.push(t0.elapsed().as_secs_f64());
+        let spent = start.elapsed().as_secs_f64();
+        if (times.len() >= 3 && spent > budget) || (times.len() == 1 && spent > budget) {
+            break;
+        }
+    }
+    times.sort_by(|a, b| a.total_cmp(b));
+    Ok((times[times.len() / 2], times.len()))
+}
+
+/// Cubic Hermite interpolation of the force of a history at `t` (derivatives by finite
+/// differences of neighbouring samples).
+fn interp(t_s: &[f64], f_s: &[f64], t: f64) -> f64 {
+    let n = t_s.len();
+    if n < 2 || t <= t_s[0] {
+        return f_s.first().copied().unwrap_or(0.0);
+    }
+    if t >= t_s[n - 1] {
+        return 0.0;
+    }
+    let i = t_s.partition_point(|&x| x <= t).clamp(1, n - 1) - 1;
+    let slope = |j: usize| {
+        let (a, b) = (j.saturating_sub(1), (j + 1).min(n - 1));
+        (f_s[b] - f_s[a]) / (t_s[b] - t_s[a])
+    };
+    let h = t_s[i + 1] - t_s[i];
+    let s = (t - t_s[i]) / h;
+    let (h00, h10, h01, h11) = (
+        (1.0 + 2.0 * s) * (1.0 - s) * (1.0 - s),
+        s * (1.0 - s) * (1.0 - s),
+        s * s * (3.0 - 2.0 * s),
+        s * s * (s - 1.0),
+    );
+    h00 * f_s[i] + h10 * h * slope(i) + h01 * f_s[i + 1] + h11 * h * slope(i + 1)
+}
+
+fn force_error(o: &Outcome, reference: &Outcome) -> f64 {
+    let (Some(h), Some(r)) = (o.history.as_ref(), reference.history.as_ref()) else {
+        return f64::NAN;
+    };
+    let f_peak = r.force.iter().cloned().fold(0.0, f64::max);
+    h.t.iter()
+        .zip(&h.force)
+        .map(|(&t, &f)| (f - interp(&r.t, &r.force, t)).abs() / f_peak)
+        .fold(0.0, f64::max)
+}
+
+/// Run the benchmark. `tick` after every point.
+pub fn run(quick: bool, budget: f64, tick: &dyn Fn()) -> Result<Vec<BenchPoint>> {
+    let mut out = Vec::new();
+    for case in cases(quick) {
+        let imp = case.impact()?;
+        let prony = imp.canonical_relaxation();
+        let reference = theory::reference::impact_sampled(&prony, 1e-11, 40001)?;
+        for (solver, rtols) in sweep(quick) {
+            for rtol in rtols {
+                let opts = SolveOptions {
+                    solver,
+                    rtol,
+                    ..Default::default()
+                };
+                let mut cor = f64::NAN;
+                let timed = median_time(budget, || {
+                    cor = solve(&imp, &opts)?.cor;
+                    Ok(())
+                });
+                let (median_seconds, repeats) = match timed {
+                    Ok(x) => x,
+                    Err(Error::AccuracyNotReached { .. }) | Err(Error::WorkLimit { .. }) => {
+                        tick();
+                        continue;
+                    }
+                    Err(e) => return Err(e),
+                };
+                let with_history = solve(
+                    &imp,
+                    &SolveOptions {
+                        history: true,
+                        ..opts
+                    },
+                )?;
+                out.push(BenchPoint {
+                    solver,
+                    rtol,
+                    case: case.id,
+                    regime: case.regime.name(),
+                    median_seconds,
+                    repeats,
+                    cor_error: ((cor - reference.cor) / reference.cor).abs(),
+                    force_error: force_error(&with_history, &reference),
+                });
+                tick();
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Units of progress of [`run`].
+pub fn units(quick: bool) -> u64 {
+    (cases(quick).len() * sweep(quick).iter().map(|s| s.1.len()).sum::<usize>()) as u64
+}
+
+/// Write the points as CSV.
+pub fn write_csv(path: &Path, points: &[BenchPoint]) -> Result<()> {
+    let mut s =
+        String::from("solver,rtol,case,regime,median_seconds,repeats,cor_error,force_error\n");
+    for p in points {
+        let _ = writeln!(
+            s,
+            "{},{:e},{},{},{:e},{},{:e},{:e}",
+            p.solver,
+            p.rtol,
+            p.case,
+            p.regime,
+            p.median_seconds,
+            p.repeats,
+            p.cor_error,
+            p.force_error
+        );
+    }
+    write_atomic(path, |w| {
+        w.write_all(s.as_bytes()).map_err(|e| Error::io(path, e))
+    })
+}
+
+/// Log-log work-precision plot: per solver, the worst CoR error over the cases against the
+/// median time per impact (geometric mean over the cases), one point per rtol.
+pub fn plot(path: &Path, points: &[BenchPoint]) -> Result<()> {
+    let mut series = Vec::new();
+    for (solver, rtols) in sweep(false) {
+        let mut pts = Vec::new();
+        for rtol in rtols {
+            let sel: Vec<&BenchPoint> = points
+                .iter()
+                .filter(|p| p.solver == solver && p.rtol == rtol)
+                .collect();
+            if sel.is_empty() {
+                continue;
+            }
+            let t =
+                (sel.iter().map(|p| p.median_seconds.ln()).sum::<f64>() / sel.len() as f64).exp();
+            let e = sel
+                .iter()
+                .map(|p| p.cor_error)
+                .fold(0.0, f64::max)
+                .max(1e-16);
+            pts.push((t.log10(), e.log10()));
+        }
+        if !pts.is_empty() {
+            series.push((solver.name().to_string(), pts));
+        }
+    }
+    crate::plot::line_chart_svg(
+        path,
+        "Work-precision: worst CoR error over the cases vs time per impact",
+        "log10 median time per impact (s)",
+        "log10 max relative CoR error",
+        &series,
+    )
+}
+
+/// The performance section of VALIDATION.md (between the markers).
+pub fn summary(points: &[BenchPoint], machine: &str, batch: Option<(usize, f64)>) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "Measured by `mdr-impact bench` in one run on {machine}; times are medians over repeats \
+         of a CoR-only solve (no histories), errors are against the reference solver at rtol 1e-11 \
+         (outside the timed region). Data: [`validation/bench.csv`](validation/bench.csv); \
+         plot: `validation/work-precision.svg`. Machine-dependent, so not part of the staleness check.\n"
+    );
+    let _ = writeln!(s, "![work-precision](validation/work-precision.svg)\n");
+    let _ = writeln!(
+        s,
+        "| solver | rtol | median time per impact (geometric mean over cases) | max CoR error | max force error / F_peak |\n| --- | --- | --- | --- | --- |"
+    );
+    for (solver, rtols) in sweep(false) {
+        for rtol in rtols {
+            let sel: Vec<&BenchPoint> = points
+                .iter()
+                .filter(|p| p.solver == solver && p.rtol == rtol)
+                .collect();
+            if sel.is_empty() {
+                let _ = writeln!(
+                    s,
+                    "| {solver} | {rtol:.0e} | refused (work limit) | - | - |"
+                );
+                continue;
+            }
+            let t =
+                (sel.iter().map(|p| p.median_seconds.ln()).sum::<f64>() / sel.len() as f64).exp();
+            let e = sel.iter().map(|p| p.cor_error).fold(0.0, f64::max);
+            let f = sel.iter().map(|p| p.force_error).fold(0.0, f64::max);
+            let _ = writeln!(
+                s,
+                "| {solver} | {rtol:.0e} | {} | {e:.1e} | {f:.1e} |",
+                fmt_time(t)
+            );
+        }
+    }
+    if let Some((rows, secs)) = batch {
+        let _ = writeln!(
+            s,
+            "\n`mdr-impact cor --input` path (`batch::solve_rows`, default solver and rtol 1e-6, all cores): \
+             {rows} random rows of the paper's range in {secs:.2} s."
+        );
+    }
+    s
+}
+
+/// Human time.
+pub fn fmt_time(t: f64) -> String {
+    if t < 1e-3 {
+        format!("{:.1} µs", t * 1e6)
+    } else if t < 1.0 {
+        format!("{:.2} ms", t * 1e3)
+    } else {
+        format!("{t:.2} s")
+    }
+}
+
+/// Machine description (CPU model and core count) for the report.
+pub fn machine() -> String {
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("model name"))
+                .and_then(|l| l.split(':').nth(1))
+                .map(|x| x.trim().to_string())
+        })
+        .unwrap_or_else(|| "unknown CPU".into());
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    format!("{cpu}, {cores} cores")
+}
