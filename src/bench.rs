@@ -80,7 +80,7 @@ pub fn median_time(budget: f64, mut f: impl FnMut() -> Result<()>) -> Result<(f6
         f()?;
         times.push(t0.elapsed().as_secs_f64());
         let spent = start.elapsed().as_secs_f64();
-        if (times.len() >= 3 && spent > budget) || (times.len() == 1 && spent > budget) {
+        if spent > budget && (times.len() >= 3 || times.len() == 1) {
             break;
         }
     }
