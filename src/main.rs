@@ -310,6 +310,10 @@ fn run(cli: Cli) -> Result<(), Error> {
             };
             let fresh = validate::run(&opts, &|| bar.inc(1))?;
             bar.finish_and_clear();
+            // the per-regime accuracy table on stdout
+            if let (Some(b), Some(e)) = (fresh.find("### Per regime"), fresh.find("### Per case")) {
+                println!("{}", fresh[b..e].trim_end());
+            }
             let existing = std::fs::read_to_string(&out).unwrap_or_default();
             if check {
                 let fresh = fresh.replace(&opts.figure_dir.display().to_string(), "validation");

@@ -271,4 +271,26 @@ fn error_variants() {
         })
     ));
     assert!(matches!("euler".parse::<SolverKind>(), Err(Unsupported(_))));
+    // a time loop that is not allowed enough steps to finish the contact
+    let mat = solver::canonical_material(&imp);
+    let layout = mdr::pilot(&mat.prony).unwrap();
+    let mut grid = mdr::Grid::from_layout(&layout, 16, 32);
+    grid.max_steps = 5;
+    assert!(matches!(
+        mdr::run_exponential(&mat.prony, &grid, 1000, false),
+        Err(NoConvergence { .. })
+    ));
+    // a quadrature that cannot meet its tolerance
+    let q = mdr_impact::theory::quad::integrate(
+        "oscillatory",
+        |x: f64| (1e6 * x).sin() / x.sqrt().max(1e-300),
+        0.0,
+        1.0,
+        &[],
+        1e-15,
+    );
+    assert!(
+        matches!(q, Err(Quadrature { .. }) | Err(NonFinite { .. })),
+        "{q:?}"
+    );
 }
