@@ -17,6 +17,7 @@
 
 pub mod batch;
 pub mod error;
+pub mod fast;
 pub mod impact;
 pub mod indentation;
 pub mod material;
