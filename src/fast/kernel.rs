@@ -15,6 +15,9 @@
 //! `Ĵ_ν(0) = 1/ν` (no relaxation), `Ĵ_ν(x) ~ 1/x` for `x -> inf` (a dashpot). This is what makes
 //! the solver exact in the kernel for any `h / tau` (an exponential integrator).
 
+// Index loops mirror the formulas (i: node, j: basis function, k: Prony term).
+#![allow(clippy::needless_range_loop)]
+
 /// Largest `x` for which the positive series is used for non-integer `ν`; beyond it the
 /// asymptotic series has error below `e^(-x)`.
 const ASYMPTOTIC_X: f64 = 40.0;

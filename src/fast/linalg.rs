@@ -1,5 +1,8 @@
 //! Small dense linear algebra on fixed-size arrays (no allocation in the time loop).
 
+// Index loops mirror the formulas (i: node, j: basis function, k: Prony term).
+#![allow(clippy::needless_range_loop)]
+
 /// Square matrix of the collocation size.
 pub(crate) type Mat<const N: usize> = [[f64; N]; N];
 

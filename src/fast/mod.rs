@@ -37,6 +37,9 @@
 //!
 //! Independent of [`crate::mdr`] and [`crate::theory`]; shares only [`Prony`] with them.
 
+// Index loops mirror the formulas (i: node, j: basis function, k: Prony term).
+#![allow(clippy::needless_range_loop)]
+
 mod kernel;
 mod linalg;
 
@@ -279,10 +282,8 @@ fn jt(kind: Kind, x: f64) -> Jt {
                 d: [0.0; S],
                 w: [0.0; S],
             };
-            for k in 0..S {
-                j.d[k] = t[k + 2];
-                j.w[k] = t[k + 1];
-            }
+            j.d.copy_from_slice(&t[2..S + 2]);
+            j.w.copy_from_slice(&t[1..S + 1]);
             j
         }
         Kind::First => {
@@ -493,44 +494,53 @@ impl Solver {
                 }
             }
         }
-        let forces = |dv: &[f64; S]| {
+        // unknowns: the increments z_i = d(t_n + c_i h) - dfix_i (no cancellation for small h)
+        let regular = kind == Kind::Regular;
+        let forces = |z: &[f64; S]| {
+            let mut dw = [0.0; S]; // W_i - wfix_i
             let mut w = [0.0; S];
             for i in 0..S {
-                w[i] = dv[i].max(0.0).powf(1.5);
+                let di = (dfix[i] + z[i]).max(0.0);
+                w[i] = di.powf(1.5);
+                dw[i] = if regular {
+                    pow15_increment(dn, vh * c[i] + z[i])
+                } else {
+                    w[i] - wfix_n[i]
+                };
             }
             let mut f = [0.0; S];
             for i in 0..S {
                 let mut acc = self.c_inf * w[i] + f0[i];
                 for j in 0..S {
-                    acc += m[i][j] * (w[j] - wfix_n[j]);
+                    acc += m[i][j] * dw[j];
                 }
                 f[i] = K16 * acc;
             }
-            (w, f)
+            (dw, f)
         };
         let h2 = h * h;
-        let mut dv = [0.0; S];
+        let mut z = [0.0; S];
         for i in 0..S {
             let mut a1 = 0.0;
             for j in 0..S {
                 a1 += b.a[i][j];
             }
-            dv[i] = dfix[i] - h2 * a1 * f_n;
+            z[i] = -h2 * a1 * f_n;
         }
         let mut prev = f64::INFINITY;
         let mut converged = false;
         for _ in 0..FAST_NEWTON_MAX_ITER {
             self.evaluations += S as u64;
-            let (_, f) = forces(&dv);
+            let (_, f) = forces(&z);
             let af = linalg::mul_vec(&b.a, &f);
             let mut r = [0.0; S];
             for i in 0..S {
-                r[i] = -(dv[i] - dfix[i] + h2 * af[i]);
+                r[i] = -(z[i] + h2 * af[i]);
             }
             let mut jf = [[0.0; S]; S];
             for i in 0..S {
                 for j in 0..S {
-                    let dw = 1.5 * dv[j].max(0.0).sqrt();
+                    let dw = 1.5 * (dfix[j] + z[j]).max(0.0).sqrt();
                     jf[i][j] = K16 * (m[i][j] + if i == j { self.c_inf } else { 0.0 }) * dw;
                 }
             }
@@ -545,17 +555,11 @@ impl Solver {
                 what: "fast compression step (singular Newton matrix)",
                 iterations: 0,
             })?;
-            let mut dmax: f64 = 0.0;
-            let mut scale: f64 = 0.0;
-            for i in 0..S {
-                dv[i] += delta[i];
-                dmax = dmax.max(delta[i].abs());
-                scale = scale.max(dv[i].abs());
-            }
-            if !(dmax.is_finite()) {
+            let (dmax, scale) = update(&mut z, &delta);
+            if !dmax.is_finite() {
                 break;
             }
-            if dmax <= 1e-15 * scale || (dmax <= 1e-12 * scale && dmax > 0.3 * prev) {
+            if newton_done(dmax, scale, prev) {
                 converged = true;
                 break;
             }
@@ -567,13 +571,8 @@ impl Solver {
                 iterations: FAST_NEWTON_MAX_ITER as u64,
             });
         }
-        let (w, f) = forces(&dv);
-        let mut rd = [0.0; S];
-        let mut rw = [0.0; S];
-        for i in 0..S {
-            rd[i] = dv[i] - dfix[i];
-            rw[i] = w[i] - wfix_n[i];
-        }
+        let (rw, f) = forces(&z);
+        let rd = z;
         let seg = Seg {
             t0,
             h,
@@ -592,7 +591,7 @@ impl Solver {
         let d2 = K16 * self.glassy * (pt.d.max(0.0).powf(1.5) - pt.w).abs();
         let mut a = [0.0; S];
         for i in 0..S {
-            a[i] = dv[i].max(0.0).sqrt();
+            a[i] = (dfix[i] + z[i]).max(0.0).sqrt();
         }
         Ok(StepOut {
             seg,
@@ -709,13 +708,13 @@ impl Solver {
             }
         }
         let h2 = h * h;
-        let mut dv = [0.0; S];
+        let mut z = [0.0; S];
         for i in 0..S {
             let mut a1 = 0.0;
             for j in 0..S {
                 a1 += b.a[i][j];
             }
-            dv[i] = dfix[i] - h2 * a1 * f_n;
+            z[i] = -h2 * a1 * f_n;
         }
         let mut t1 = *t1_guess;
         let mut f = [0.0; S];
@@ -728,11 +727,11 @@ impl Solver {
                 for k in 0..self.k {
                     let mut acc = sfix[k][i];
                     for j in 0..S {
-                        acc += nk[k][i][j] * (dv[j] - dfix[j]);
+                        acc += nk[k][i][j] * z[j];
                     }
                     si[k] = acc;
                 }
-                let (r1, fi, di) = self.t1_root(t0 + c[i] * h, dv[i], &si, t1[i])?;
+                let (r1, fi, di) = self.t1_root(t0 + c[i] * h, dfix[i] + z[i], &si, t1[i])?;
                 t1[i] = r1;
                 f[i] = fi;
                 d1[i] = di;
@@ -743,7 +742,7 @@ impl Solver {
             let af = linalg::mul_vec(&b.a, &f);
             let mut r = [0.0; S];
             for i in 0..S {
-                r[i] = -(dv[i] - dfix[i] + h2 * af[i]);
+                r[i] = -(z[i] + h2 * af[i]);
             }
             let mut jf = [[0.0; S]; S];
             for i in 0..S {
@@ -765,19 +764,11 @@ impl Solver {
                 what: "fast restitution step (singular Newton matrix)",
                 iterations: 0,
             })?;
-            let mut dmax: f64 = 0.0;
-            let mut scale: f64 = 0.0;
-            for i in 0..S {
-                dv[i] += delta[i];
-                dmax = dmax.max(delta[i].abs());
-                scale = scale.max(dv[i].abs());
-            }
+            let (dmax, scale) = update(&mut z, &delta);
             if !dmax.is_finite() {
                 break;
             }
-            if dmax <= 1e-15 * scale || (dmax <= 1e-12 * scale && dmax > 0.3 * prev) {
-                converged = true;
-            }
+            converged = newton_done(dmax, scale, prev);
             prev = dmax;
         }
         if !converged {
@@ -786,10 +777,7 @@ impl Solver {
                 iterations: FAST_NEWTON_MAX_ITER as u64,
             });
         }
-        let mut rd = [0.0; S];
-        for i in 0..S {
-            rd[i] = dv[i] - dfix[i];
-        }
+        let rd = z;
         let seg = Seg {
             t0,
             h,
@@ -872,6 +860,40 @@ impl Solver {
     }
 }
 
+/// `(d + delta)^(3/2) - d^(3/2)` without cancellation for small `delta`.
+fn pow15_increment(d: f64, delta: f64) -> f64 {
+    let a = (d + delta).max(0.0);
+    let b = d.max(0.0);
+    let den = a * a.sqrt() + b * b.sqrt();
+    let diff = if d >= 0.0 && d + delta >= 0.0 {
+        delta
+    } else {
+        a - b
+    };
+    if den > 0.0 {
+        diff * (a * a + a * b + b * b) / den
+    } else {
+        0.0
+    }
+}
+
+/// Add a Newton correction; returns `(max |delta|, max |z|)`.
+fn update(z: &mut [f64; S], delta: &[f64; S]) -> (f64, f64) {
+    let mut dmax: f64 = 0.0;
+    let mut scale: f64 = 0.0;
+    for i in 0..S {
+        z[i] += delta[i];
+        dmax = dmax.max(delta[i].abs());
+        scale = scale.max(z[i].abs());
+    }
+    (dmax, scale)
+}
+
+/// Newton stop: a correction at rounding level of the increments, or stagnation near it.
+fn newton_done(dmax: f64, scale: f64, prev: f64) -> bool {
+    dmax <= 1e-14 * scale || (dmax <= 1e-10 * scale && dmax > 0.3 * prev) || scale == 0.0
+}
+
 /// Running maximum of the force with a parabola through the three samples around the peak.
 #[derive(Default)]
 struct PeakTracker {
@@ -934,7 +956,7 @@ fn step_factor(ratio: f64) -> f64 {
 /// coefficient or time, more than [`FAST_MAX_TERMS`] terms); [`Error::NoConvergence`] /
 /// [`Error::WorkLimit`] when a bounded iteration does not finish.
 pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
-    if !(rtol >= tolerances::MIN_RTOL && rtol <= tolerances::MAX_RTOL) {
+    if !(tolerances::MIN_RTOL..=tolerances::MAX_RTOL).contains(&rtol) {
         return Err(Error::OutOfRange {
             field: "rtol",
             value: rtol,
