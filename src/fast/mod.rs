@@ -287,25 +287,27 @@ fn jt(kind: Kind, x: f64) -> Jt {
             j
         }
         Kind::First => {
+            // integer family 1, 2, ..., S+1 and half-integer family 3/2, 5/2, ..., S+1/2
+            let mut fi = [0.0; S + 1];
+            let mut fh = [0.0; S + 1];
+            kernel::jhat_family(1.0, x, &mut fi);
+            kernel::jhat_family(1.5, x, &mut fh);
+            let pick = |nu: f64| -> f64 {
+                if nu.fract() == 0.0 {
+                    fi[nu as usize - 1]
+                } else {
+                    fh[(nu - 1.5) as usize]
+                }
+            };
             let mut j = Jt {
-                one: kernel::jhat(1.0, x),
-                wfix: kernel::jhat(1.5, x),
+                one: fi[0],
+                wfix: fh[0],
                 d: [0.0; S],
                 w: [0.0; S],
             };
-            // dexp = 2.5, 3, ..., wexp = 3, 3.5, ...: share the common values
             for k in 0..S {
-                j.d[k] = if k >= 1 {
-                    f64::NAN
-                } else {
-                    kernel::jhat(2.5, x)
-                };
-            }
-            for k in 0..S {
-                j.w[k] = kernel::jhat(wexp(kind, k), x);
-            }
-            for k in 1..S {
-                j.d[k] = j.w[k - 1];
+                j.d[k] = pick(dexp(kind, k));
+                j.w[k] = pick(wexp(kind, k));
             }
             j
         }
@@ -343,7 +345,131 @@ struct Pt {
     s: [f64; KMAX],
 }
 
+/// Largest number of coefficients of a dense kernel polynomial.
+const NT: usize = 64;
+/// `h / tau` above which the dense output uses the polynomial particular solution.
+/// The particular form loses about `log10(Σ_m m! λ^-m |α_m| / |y|)` digits: a few at `λ = 1/2`
+/// for the small high-order coefficients; the Taylor form needs ~`15` terms there.
+const PARTICULAR_LAMBDA: f64 = 0.5;
+/// `h / tau` up to which the first step's kernels have a dense series in `sqrt(θ)`.
+const SIGMA_LAMBDA: f64 = 2.0;
+
+/// Dense output of one hereditary integral on a regular step, for fast evaluation at any `θ`:
+/// `y(θ) = poly(θ) + amp exp(-λ θ)` with `λ = h / tau`. For `λ <= 1/2` `poly` is the Taylor
+/// series of the exact solution (`amp = 0`, terms decay like `λ^n / n!`); for `λ > 1/2` it is
+/// the polynomial particular solution `Y = Σ_j (-1/λ)^j (1/λ) P^(j+1)` of
+/// `y' = -λ y + P'` and `amp = y(0) - Y(0)`. Both are exact for the step's polynomial `P`.
+#[derive(Clone, Copy, Debug)]
+struct KernelPoly {
+    lam: f64,
+    amp: f64,
+    n: usize,
+    c: [f64; NT],
+    /// Coefficients are of powers of `sqrt(θ)` (first step).
+    sigma: bool,
+}
+
+impl KernelPoly {
+    /// First step, `λ <= 2`: `y = Σ_n y_n σ^n`, `σ = sqrt(θ)`, `y_n = p_n - (2λ/n) y_(n-2)`,
+    /// `y_0 = 0`; `p` holds the forcing's coefficients of `σ^n`. `None` for `λ > 2`.
+    fn new_sigma(p: &[f64], lam: f64) -> Option<Self> {
+        if lam > SIGMA_LAMBDA {
+            return None;
+        }
+        let mut c = [0.0; NT];
+        let mut big: f64 = 0.0;
+        let mut n = 1;
+        while n < NT {
+            let pn = if n < p.len() { p[n] } else { 0.0 };
+            let prev = if n >= 2 { c[n - 2] } else { 0.0 };
+            c[n] = pn - 2.0 * lam / n as f64 * prev;
+            big = big.max(c[n].abs());
+            n += 1;
+            if n >= p.len() + 1 && c[n - 1].abs() <= 1e-18 * big && c[n - 2].abs() <= 1e-18 * big {
+                break;
+            }
+        }
+        Some(KernelPoly {
+            lam,
+            amp: 0.0,
+            n,
+            c,
+            sigma: true,
+        })
+    }
+
+    fn new(y0: f64, p: &[f64], lam: f64) -> Self {
+        let mut c = [0.0; NT];
+        if lam <= PARTICULAR_LAMBDA {
+            c[0] = y0;
+            let mut big = y0.abs();
+            let mut n = 1;
+            while n < NT {
+                let pn = if n < p.len() { p[n] } else { 0.0 };
+                c[n] = (-lam * c[n - 1] + n as f64 * pn) / n as f64;
+                big = big.max(c[n].abs());
+                n += 1;
+                if n >= p.len() && c[n - 1].abs() <= 1e-18 * big {
+                    break;
+                }
+            }
+            KernelPoly {
+                lam,
+                amp: 0.0,
+                n,
+                c,
+                sigma: false,
+            }
+        } else {
+            let eps = 1.0 / lam;
+            // derivative coefficients, repeatedly
+            let mut der = [0.0; NT];
+            let deg = p.len() - 1;
+            for i in 0..deg {
+                der[i] = (i + 1) as f64 * p[i + 1];
+            }
+            let mut len = deg;
+            let mut fac = eps;
+            while len > 0 {
+                for i in 0..len {
+                    c[i] += fac * der[i];
+                }
+                for i in 0..len - 1 {
+                    der[i] = (i + 1) as f64 * der[i + 1];
+                }
+                len -= 1;
+                fac *= -eps;
+            }
+            KernelPoly {
+                lam,
+                amp: y0 - c[0],
+                n: deg.max(1),
+                c,
+                sigma: false,
+            }
+        }
+    }
+
+    /// Value at `θ`; `ex = exp(-λ θ)` (only used when `amp != 0`), `x = θ` or `sqrt(θ)`.
+    #[inline]
+    fn eval(&self, x: f64, ex: f64) -> f64 {
+        let mut acc = 0.0;
+        for i in (0..self.n).rev() {
+            acc = acc * x + self.c[i];
+        }
+        if self.amp != 0.0 {
+            acc += self.amp * ex;
+        }
+        acc
+    }
+}
+
 struct Solver {
+    rtol: f64,
+    /// Newton step of `t_1` below which the Newton point is taken with first-order updates.
+    accept_step: f64,
+    dense: Vec<[KernelPoly; 2]>,
+    dense_ok: Vec<bool>,
     c_inf: f64,
     c: [f64; KMAX],
     tau: [f64; KMAX],
@@ -427,8 +553,117 @@ impl Solver {
     fn comp_at(&mut self, t1: f64) -> Pt {
         self.evaluations += 1;
         let i = self.comp.partition_point(|s| s.t0 <= t1).max(1) - 1;
-        let seg = self.comp[i];
-        self.eval_seg(&seg, ((t1 - seg.t0) / seg.h).max(0.0), true)
+        let seg = &self.comp[i];
+        let th = ((t1 - seg.t0) / seg.h).max(0.0);
+        if self.dense.len() <= i * self.k || !self.dense_ok[i] {
+            return self.eval_seg(seg, th, true);
+        }
+        if seg.kind == Kind::First {
+            let p = powers(Kind::First, th);
+            let mut d = seg.vh * th;
+            let mut v = seg.vh;
+            for j in 0..S {
+                let e = dexp(Kind::First, j);
+                d += seg.alpha[j] * p.d0[j];
+                v += seg.alpha[j] * e * p.d1[j];
+            }
+            let mut q = [0.0; KMAX];
+            let mut s = [0.0; KMAX];
+            let sig = th.sqrt();
+            for k in 0..self.k {
+                let kp = &self.dense[i * self.k + k];
+                s[k] = kp[0].eval(sig, 0.0);
+                q[k] = kp[1].eval(sig, 0.0);
+            }
+            return Pt {
+                d,
+                v: v / seg.h,
+                dd: 0.0,
+                w: pow15(d),
+                q,
+                s,
+            };
+        }
+        // regular step: d = dn + vh θ + Σ α_j θ^(j+2), kernels from the precomputed polynomials
+        let mut d = 0.0;
+        let mut dv = 0.0;
+        for j in (0..S).rev() {
+            d = d * th + seg.alpha[j];
+            dv = dv * th + (j + 2) as f64 * seg.alpha[j];
+        }
+        let d = seg.dn + th * (seg.vh + th * d);
+        let v = (seg.vh + th * dv) / seg.h;
+        let mut q = [0.0; KMAX];
+        let mut s = [0.0; KMAX];
+        for k in 0..self.k {
+            let kp = &self.dense[i * self.k + k];
+            let ex = if kp[0].amp != 0.0 || kp[1].amp != 0.0 {
+                (-kp[0].lam * th).exp()
+            } else {
+                0.0
+            };
+            s[k] = kp[0].eval(th, ex);
+            q[k] = kp[1].eval(th, ex);
+        }
+        Pt {
+            d,
+            v,
+            dd: 0.0,
+            w: pow15(d),
+            q,
+            s,
+        }
+    }
+
+    /// Precompute the dense kernel polynomials of the regular compression steps.
+    fn build_dense(&mut self) {
+        let mut dense = Vec::with_capacity(self.comp.len() * self.k);
+        let mut ok = Vec::with_capacity(self.comp.len());
+        for seg in &self.comp {
+            if seg.kind == Kind::First {
+                // forcing coefficients of σ^n: d = vh σ^2 + Σ α_j σ^(5+j), w = wfix σ^3 + Σ β_j σ^(6+j)
+                let mut ps = [0.0; S + 6];
+                ps[2] = seg.vh;
+                ps[5..5 + S].copy_from_slice(&seg.alpha);
+                let mut pq = [0.0; S + 6];
+                pq[3] = seg.wfix;
+                pq[6..6 + S].copy_from_slice(&seg.beta);
+                let mut good = true;
+                for k in 0..self.k {
+                    let lam = seg.h / self.tau[k];
+                    match (
+                        KernelPoly::new_sigma(&ps, lam),
+                        KernelPoly::new_sigma(&pq, lam),
+                    ) {
+                        (Some(a), Some(b)) => dense.push([a, b]),
+                        _ => {
+                            good = false;
+                            let z = KernelPoly::new(0.0, &[0.0, 0.0], 0.0);
+                            dense.push([z, z]);
+                        }
+                    }
+                }
+                ok.push(good);
+                continue;
+            }
+            ok.push(true);
+            let mut ps = [0.0; S + 2];
+            ps[0] = seg.dn;
+            ps[1] = seg.vh;
+            ps[2..].copy_from_slice(&seg.alpha);
+            let mut pq = [0.0; S + 1];
+            pq[0] = seg.wfix;
+            pq[1..].copy_from_slice(&seg.beta);
+            for k in 0..self.k {
+                let lam = seg.h / self.tau[k];
+                dense.push([
+                    KernelPoly::new(seg.s0[k], &ps, lam),
+                    KernelPoly::new(seg.q0[k], &pq, lam),
+                ]);
+            }
+        }
+        self.dense = dense;
+        self.dense_ok = ok;
     }
 
     fn force_comp(&self, pt: &Pt) -> f64 {
@@ -451,13 +686,14 @@ impl Solver {
         s0: &[f64; KMAX],
         h: f64,
         f_n: f64,
+        pred: Option<&Seg>,
     ) -> Result<StepOut> {
         let b = self.basis(kind);
         let c = self.tab.c;
         let vh = vn * h;
         let wfix = match kind {
-            Kind::Regular => dn.max(0.0).powf(1.5),
-            Kind::First => vh.powf(1.5),
+            Kind::Regular => pow15(dn),
+            Kind::First => pow15(vh),
         };
         let mut dfix = [0.0; S];
         let mut wfix_n = [0.0; S];
@@ -501,7 +737,7 @@ impl Solver {
             let mut w = [0.0; S];
             for i in 0..S {
                 let di = (dfix[i] + z[i]).max(0.0);
-                w[i] = di.powf(1.5);
+                w[i] = pow15(di);
                 dw[i] = if regular {
                     pow15_increment(dn, vh * c[i] + z[i])
                 } else {
@@ -525,7 +761,11 @@ impl Solver {
             for j in 0..S {
                 a1 += b.a[i][j];
             }
-            z[i] = -h2 * a1 * f_n;
+            z[i] = match pred {
+                // extrapolate the previous step's polynomial to the new nodes
+                Some(p) => seg_d(p, (t0 + c[i] * h - p.t0) / p.h) - dfix[i],
+                None => -h2 * a1 * f_n,
+            };
         }
         let mut prev = f64::INFINITY;
         let mut converged = false;
@@ -559,7 +799,7 @@ impl Solver {
             if !dmax.is_finite() {
                 break;
             }
-            if newton_done(dmax, scale, prev) {
+            if newton_done(dmax, scale, prev, self.rtol) {
                 converged = true;
                 break;
             }
@@ -588,7 +828,7 @@ impl Solver {
         // defect of the collocation polynomial between the nodes
         let pt = self.eval_seg(&seg, self.tab.theta_star, true);
         let d1 = pt.dd + self.force_comp(&pt);
-        let d2 = K16 * self.glassy * (pt.d.max(0.0).powf(1.5) - pt.w).abs();
+        let d2 = K16 * self.glassy * (pow15(pt.d) - pt.w).abs();
         let mut a = [0.0; S];
         for i in 0..S {
             a[i] = (dfix[i] + z[i]).max(0.0).sqrt();
@@ -646,6 +886,13 @@ impl Solver {
             if step <= 1e-14 * tm || hi - lo <= 1e-14 * tm {
                 return Ok((x, K16 * f, pt.d));
             }
+            if step <= self.accept_step && newton >= lo && newton <= hi {
+                // quadratic convergence: the Newton point is exact to ~step^2; move F and d
+                // there to first order (dF/dt_1 = (16/3) G_eq(t - t_1) w'(t_1))
+                let dx = newton - x;
+                let df = K16 * 1.5 * pt.d.max(0.0).sqrt() * pt.v * g;
+                return Ok((newton, K16 * f + df * dx, pt.d + pt.v * dx));
+            }
             x = if newton > lo && newton < hi {
                 newton
             } else if !hi_checked && lo > 0.0 {
@@ -676,6 +923,7 @@ impl Solver {
         h: f64,
         f_n: f64,
         t1_guess: &[f64; S],
+        pred: Option<&Seg>,
     ) -> Result<StepOut> {
         let b = &self.tab.reg;
         let c = self.tab.c;
@@ -714,7 +962,11 @@ impl Solver {
             for j in 0..S {
                 a1 += b.a[i][j];
             }
-            z[i] = -h2 * a1 * f_n;
+            z[i] = match pred {
+                // extrapolate the previous step's polynomial to the new nodes
+                Some(p) => seg_d(p, (t0 + c[i] * h - p.t0) / p.h) - dfix[i],
+                None => -h2 * a1 * f_n,
+            };
         }
         let mut t1 = *t1_guess;
         let mut f = [0.0; S];
@@ -768,7 +1020,7 @@ impl Solver {
             if !dmax.is_finite() {
                 break;
             }
-            converged = newton_done(dmax, scale, prev);
+            converged = newton_done(dmax, scale, prev, self.rtol);
             prev = dmax;
         }
         if !converged {
@@ -860,6 +1112,23 @@ impl Solver {
     }
 }
 
+/// `d` of a step's polynomial at `θ` (any `θ >= 0`, also beyond the step for prediction).
+fn seg_d(seg: &Seg, th: f64) -> f64 {
+    let p = powers(seg.kind, th);
+    let mut d = seg.dn + seg.vh * th;
+    for j in 0..S {
+        d += seg.alpha[j] * p.d0[j];
+    }
+    d
+}
+
+/// `max(x, 0)^(3/2)`.
+#[inline]
+fn pow15(x: f64) -> f64 {
+    let x = x.max(0.0);
+    x * x.sqrt()
+}
+
 /// `(d + delta)^(3/2) - d^(3/2)` without cancellation for small `delta`.
 fn pow15_increment(d: f64, delta: f64) -> f64 {
     let a = (d + delta).max(0.0);
@@ -890,8 +1159,9 @@ fn update(z: &mut [f64; S], delta: &[f64; S]) -> (f64, f64) {
 }
 
 /// Newton stop: a correction at rounding level of the increments, or stagnation near it.
-fn newton_done(dmax: f64, scale: f64, prev: f64) -> bool {
-    dmax <= 1e-14 * scale || (dmax <= 1e-10 * scale && dmax > 0.3 * prev) || scale == 0.0
+fn newton_done(dmax: f64, scale: f64, prev: f64, rtol: f64) -> bool {
+    let tol = (1e-4 * rtol).max(1e-14);
+    dmax <= tol * scale || (dmax <= 1e-10 * scale && dmax > 0.3 * prev) || scale == 0.0
 }
 
 /// Running maximum of the force with a parabola through the three samples around the peak.
@@ -1012,6 +1282,8 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
     }
     let glassy = c_inf + c[..k].iter().sum::<f64>();
     let mut s = Solver {
+        rtol,
+        accept_step: 0.0,
         c_inf,
         c,
         tau,
@@ -1019,6 +1291,8 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
         glassy,
         tab: tables(),
         comp: Vec::with_capacity(64),
+        dense: Vec::new(),
+        dense_ok: Vec::new(),
         t_m: 0.0,
         evaluations: 0,
     };
@@ -1065,7 +1339,7 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
     // glassy Hertz time of maximum indentation as the first length scale
     let d0 = (1.25 / (K16 * s.glassy)).powf(0.4);
     let tm0 = 0.5 * HERTZ_CONTACT_FACTOR * d0;
-    let mut h = 0.3 * tm0 * (rtol / 1e-6).powf(1.0 / (S as f64 + 1.0)).min(1.0);
+    let mut h = 0.1 * tm0 * (rtol / 1e-6).powf(1.0 / (S as f64 + 2.0)).min(1.0);
 
     // ---- compression
     let (mut t, mut d, mut v, mut f_n) = (0.0_f64, 0.0_f64, 1.0_f64, 0.0_f64);
@@ -1083,7 +1357,8 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
                 limit: FAST_MAX_STEPS,
             });
         }
-        let out = match s.comp_step(kind, t, d, v, &q, &sk, h, f_n) {
+        let pred = s.comp.last().copied();
+        let out = match s.comp_step(kind, t, d, v, &q, &sk, h, f_n, pred.as_ref()) {
             Ok(o) => o,
             Err(Error::NoConvergence { .. }) => {
                 h *= 0.25;
@@ -1165,12 +1440,15 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
         break;
     }
     s.t_m = t_m;
+    s.accept_step = (1e-4 * rtol).sqrt().min(1e-4) * t_m;
+    s.build_dense();
 
     // ---- restitution
     let (mut t, mut d, mut v, mut f_n) = (t_m, d_m, v_m, f_m);
     let mut sk = s_m;
-    let mut t1_last = t_m;
-    let mut t1_slope = -1.0; // mirror image of the elastic case
+    // t_1 at the last three nodes (None: mirror image of the elastic case, t_1 = 2 t_m - t)
+    let mut t1_hist: Option<((f64, f64), (f64, f64), (f64, f64))> = None;
+    let mut prev_rest: Option<Seg> = None;
     let mut ending = false;
     let mut end_iter = 0usize;
     let (v_end, t_end);
@@ -1186,9 +1464,19 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
         }
         let mut guess = [0.0; S];
         for i in 0..S {
-            guess[i] = (t1_last + t1_slope * s.tab.c[i] * h).clamp(0.0, t_m);
+            let tt = t + s.tab.c[i] * h;
+            guess[i] = match t1_hist {
+                // quadratic through the last three node values of t_1(t)
+                Some(((ta, ya), (tb, yb), (tc, yc))) => {
+                    ya * (tt - tb) * (tt - tc) / ((ta - tb) * (ta - tc))
+                        + yb * (tt - ta) * (tt - tc) / ((tb - ta) * (tb - tc))
+                        + yc * (tt - ta) * (tt - tb) / ((tc - ta) * (tc - tb))
+                }
+                None => t_m - (tt - t_m),
+            }
+            .clamp(0.0, t_m);
         }
-        let out = match s.rest_step(t, d, v, &sk, h, f_n, &guess) {
+        let out = match s.rest_step(t, d, v, &sk, h, f_n, &guess, prev_rest.as_ref()) {
             Ok(o) => o,
             Err(Error::NoConvergence { .. }) => {
                 h *= 0.25;
@@ -1198,13 +1486,10 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
             Err(e) => return Err(e),
         };
         let ratio = out.err / tol;
-        if !(ratio <= 1.0) {
-            h *= step_factor(ratio);
-            ending = false;
-            continue;
-        }
         let seg = out.seg;
         let (g1, end) = s.contact_measure(&seg, 1.0);
+        // the end of contact first: a step across it sees a kink (F = 0 beyond) and would be
+        // rejected for the wrong reason
         if g1 <= 0.0 || ending {
             end_iter += 1;
             if end_iter > FAST_END_MAX_ITER {
@@ -1237,6 +1522,12 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
             };
             if th.is_finite() {
                 if (th - 1.0).abs() <= 1e-9 {
+                    if !(ratio <= 1.0) {
+                        // the last step is too long for the accuracy: approach in smaller steps
+                        h *= step_factor(ratio).min(0.7);
+                        ending = false;
+                        continue;
+                    }
                     err_sum += out.err;
                     for i in 0..S {
                         peak.push(t + s.tab.c[i] * h, out.f[i]);
@@ -1254,13 +1545,19 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
                 continue;
             }
         }
+        if !(ratio <= 1.0) {
+            h *= step_factor(ratio);
+            ending = false;
+            continue;
+        }
         // accept
         err_sum += out.err;
         for i in 0..S {
             peak.push(t + s.tab.c[i] * h, out.f[i]);
         }
-        t1_slope = (out.t1[S - 1] - out.t1[S - 2]) / ((s.tab.c[S - 1] - s.tab.c[S - 2]) * h);
-        t1_last = out.t1[S - 1];
+        let node = |i: usize| (t + s.tab.c[i] * h, out.t1[i]);
+        t1_hist = Some((node(S - 3), node(S - 2), node(S - 1)));
+        prev_rest = Some(seg);
         t += h;
         d = end.d;
         v = end.v;
