@@ -364,9 +364,8 @@ struct KernelPoly {
     lam: f64,
     amp: f64,
     n: usize,
+    /// Coefficients of powers of `θ`, or of `sqrt(θ)` on the first step.
     c: [f64; NT],
-    /// Coefficients are of powers of `sqrt(θ)` (first step).
-    sigma: bool,
 }
 
 impl KernelPoly {
@@ -385,7 +384,7 @@ impl KernelPoly {
             c[n] = pn - 2.0 * lam / n as f64 * prev;
             big = big.max(c[n].abs());
             n += 1;
-            if n >= p.len() + 1 && c[n - 1].abs() <= 1e-18 * big && c[n - 2].abs() <= 1e-18 * big {
+            if n > p.len() && c[n - 1].abs() <= 1e-18 * big && c[n - 2].abs() <= 1e-18 * big {
                 break;
             }
         }
@@ -394,7 +393,6 @@ impl KernelPoly {
             amp: 0.0,
             n,
             c,
-            sigma: true,
         })
     }
 
@@ -418,7 +416,6 @@ impl KernelPoly {
                 amp: 0.0,
                 n,
                 c,
-                sigma: false,
             }
         } else {
             let eps = 1.0 / lam;
@@ -445,7 +442,6 @@ impl KernelPoly {
                 amp: y0 - c[0],
                 n: deg.max(1),
                 c,
-                sigma: false,
             }
         }
     }
@@ -1447,7 +1443,7 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
     let (mut t, mut d, mut v, mut f_n) = (t_m, d_m, v_m, f_m);
     let mut sk = s_m;
     // t_1 at the last three nodes (None: mirror image of the elastic case, t_1 = 2 t_m - t)
-    let mut t1_hist: Option<((f64, f64), (f64, f64), (f64, f64))> = None;
+    let mut t1_hist: Option<[(f64, f64); 3]> = None;
     let mut prev_rest: Option<Seg> = None;
     let mut ending = false;
     let mut end_iter = 0usize;
@@ -1467,7 +1463,7 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
             let tt = t + s.tab.c[i] * h;
             guess[i] = match t1_hist {
                 // quadratic through the last three node values of t_1(t)
-                Some(((ta, ya), (tb, yb), (tc, yc))) => {
+                Some([(ta, ya), (tb, yb), (tc, yc)]) => {
                     ya * (tt - tb) * (tt - tc) / ((ta - tb) * (ta - tc))
                         + yb * (tt - ta) * (tt - tc) / ((tb - ta) * (tb - tc))
                         + yc * (tt - ta) * (tt - tb) / ((tc - ta) * (tc - tb))
@@ -1556,7 +1552,7 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
             peak.push(t + s.tab.c[i] * h, out.f[i]);
         }
         let node = |i: usize| (t + s.tab.c[i] * h, out.t1[i]);
-        t1_hist = Some((node(S - 3), node(S - 2), node(S - 1)));
+        t1_hist = Some([node(S - 3), node(S - 2), node(S - 1)]);
         prev_rest = Some(seg);
         t += h;
         d = end.d;
