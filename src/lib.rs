@@ -19,6 +19,7 @@ pub mod batch;
 pub mod bench;
 pub mod catalogue;
 pub mod error;
+pub mod fast;
 pub mod figures;
 pub mod impact;
 pub mod indentation;

@@ -1,0 +1,85 @@
+//! Small dense linear algebra on fixed-size arrays (no allocation in the time loop).
+
+// Index loops mirror the formulas (i: node, j: basis function, k: Prony term).
+#![allow(clippy::needless_range_loop)]
+
+/// Square matrix of the collocation size.
+pub(crate) type Mat<const N: usize> = [[f64; N]; N];
+
+/// Solve `m x = b` by Gaussian elimination with partial pivoting; `None` if singular.
+pub(crate) fn solve<const N: usize>(mut m: Mat<N>, mut b: [f64; N]) -> Option<[f64; N]> {
+    for col in 0..N {
+        let mut p = col;
+        for r in col + 1..N {
+            if m[r][col].abs() > m[p][col].abs() {
+                p = r;
+            }
+        }
+        if !(m[p][col].abs() > 0.0) || !m[p][col].is_finite() {
+            return None;
+        }
+        m.swap(col, p);
+        b.swap(col, p);
+        let inv = 1.0 / m[col][col];
+        for r in col + 1..N {
+            let f = m[r][col] * inv;
+            if f != 0.0 {
+                for c in col..N {
+                    m[r][c] -= f * m[col][c];
+                }
+                b[r] -= f * b[col];
+            }
+        }
+    }
+    let mut x = [0.0; N];
+    for r in (0..N).rev() {
+        let mut s = b[r];
+        for c in r + 1..N {
+            s -= m[r][c] * x[c];
+        }
+        x[r] = s / m[r][r];
+    }
+    Some(x)
+}
+
+/// Inverse by `N` solves; `None` if singular.
+pub(crate) fn inverse<const N: usize>(m: &Mat<N>) -> Option<Mat<N>> {
+    let mut out = [[0.0; N]; N];
+    for j in 0..N {
+        let mut e = [0.0; N];
+        e[j] = 1.0;
+        let col = solve(*m, e)?;
+        for i in 0..N {
+            out[i][j] = col[i];
+        }
+    }
+    Some(out)
+}
+
+/// Matrix product.
+pub(crate) fn mul<const N: usize>(a: &Mat<N>, b: &Mat<N>) -> Mat<N> {
+    let mut out = [[0.0; N]; N];
+    for i in 0..N {
+        for k in 0..N {
+            let a_ik = a[i][k];
+            for j in 0..N {
+                out[i][j] += a_ik * b[k][j];
+            }
+        }
+    }
+    out
+}
+
+/// Matrix–vector product.
+#[inline]
+pub(crate) fn mul_vec<const N: usize>(a: &Mat<N>, x: &[f64; N]) -> [f64; N] {
+    let mut out = [0.0; N];
+    for i in 0..N {
+        let mut s = 0.0;
+        for j in 0..N {
+            s += a[i][j] * x[j];
+        }
+        out[i] = s;
+    }
+    out
+}

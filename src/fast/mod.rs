@@ -1,0 +1,1600 @@
+//! The `fast` impact solver: Lee–Radok in compression, Ting/Graham in restitution, on the
+//! indentation `d(t)` alone (theory notes §4–§5), with exact exponential kernels.
+//!
+//! # Why no elements
+//! All MDR elements in contact share one rate `u_i' = d'` and leave last-in-first-out
+//! (theory notes §5), so the force is a functional of `d(t)` alone. With a Prony series
+//! `G_eq(t) = c_inf + Σ_k c_k exp(-t/tau_k)` and canonical units `m = R = v0 = G_inf = 1`:
+//!
+//! **Compression** (`0 <= t <= t_m`, `d' >= 0`):
+//!
+//! ```text
+//! d' = v,   v' = -F,   F = (16/3) (c_inf w + Σ_k c_k q_k),   w = d^(3/2),
+//! q_k(t) = ∫_0^t exp(-(t-s)/tau_k) w'(s) ds,      S_k(t) = ∫_0^t exp(-(t-s)/tau_k) d'(s) ds.
+//! ```
+//!
+//! **Restitution** (`t > t_m`): `t_1(t) ∈ [0, t_m]` is the root of
+//! `Φ(t_1) = c_inf (d(t) - d(t_1)) + Σ_k c_k [S_k(t) - exp(-(t-t_1)/tau_k) S_k(t_1)] = 0`
+//! (the edge carries no force; `Φ` decreases in `t_1`, `dΦ/dt_1 = -d'(t_1) G_eq(t - t_1)`), and
+//! `F = (16/3) [c_inf d(t_1)^(3/2) + Σ_k c_k exp(-(t-t_1)/tau_k) q_k(t_1)]`, the contact radius
+//! `a = sqrt(d(t_1))`. Contact ends when `t_1` reaches 0, i.e. `c_inf d + Σ_k c_k S_k = 0`,
+//! and `e = -d'(t_end)` (paper Eq. 10). References: Lee & Radok (1960), Ting (1966),
+//! Graham (1965); the paper's Eqs. (1)–(3) and (10).
+//!
+//! # Method
+//! Implicit collocation with [`FAST_NODES`] Radau IIA points per step for `d'' = -F`, with the
+//! hereditary integrals evaluated **exactly** for the step's polynomial `w` and `d'`
+//! (`∫ exp(-(t-s)/tau) d/ds[(s/h)^ν] ds = ν (t/h)^ν Ĵ_ν(t/tau)`, an incomplete gamma
+//! function), so that the step follows the dynamics, not `tau` (any `h/tau`, `tau/t_c` down
+//! to 1e-12 and below). The first step uses powers of `sqrt(t)`
+//! (`d = t + Σ α_j t^(j/2)`, `j >= 5`; `w = t^(3/2) + Σ β_j t^(j/2)`, `j >= 6`), which
+//! represents the singular start exactly, including the dashpot limit `F ~ sqrt(t)`.
+//! Each step is a small Newton solve on the node values of `d`; in restitution each node
+//! also solves for `t_1` on the dense, exact-in-the-kernel output of the compression phase.
+//! Step sizes are chosen from the defect of the collocation polynomial at a point between the
+//! nodes (error per step); the end of compression (`v = 0`) is found on the dense output, the
+//! last restitution step is fitted to end where `t_1 = 0`.
+//!
+//! Independent of [`crate::mdr`] and [`crate::theory`]; shares only [`Prony`] with them.
+
+// Index loops mirror the formulas (i: node, j: basis function, k: Prony term).
+#![allow(clippy::needless_range_loop)]
+
+mod kernel;
+mod linalg;
+
+use std::sync::OnceLock;
+
+use crate::error::{Error, Result};
+use crate::impact::{History, Outcome, Work};
+use crate::material::Prony;
+use crate::tolerances;
+use linalg::Mat;
+
+/// Collocation (Radau IIA) nodes per step.
+pub const FAST_NODES: usize = 5;
+/// Largest number of Prony terms the fast solver accepts (a compressible standard solid has 2).
+pub const FAST_MAX_TERMS: usize = 8;
+/// Hard cap on steps (accepted and rejected) of one solve.
+pub const FAST_MAX_STEPS: u64 = 20_000;
+/// Iteration cap of the Newton solve of one step.
+pub const FAST_NEWTON_MAX_ITER: usize = 40;
+/// Local error tolerance per step, as a fraction of the requested `rtol`.
+pub const FAST_LOCAL_TOL_FACTOR: f64 = 0.1;
+/// Iteration cap of the fit of the last step to the end of contact.
+pub const FAST_END_MAX_ITER: usize = 60;
+/// Hertz contact time in units of the maximum indentation over `v0`:
+/// `2 I`, `I = (2/5) B(2/5, 1/2) = 1.4716375921623523` (theory notes §6).
+pub const HERTZ_CONTACT_FACTOR: f64 = 2.943_275_184_324_704_7;
+/// Name of the solver in an [`Outcome`].
+pub const SOLVER_NAME: &str = "fast";
+
+const S: usize = FAST_NODES;
+const KMAX: usize = FAST_MAX_TERMS;
+const K16: f64 = 16.0 / 3.0;
+
+// ---------------------------------------------------------------------------------------------
+// Collocation tables
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    /// First step: powers of `sqrt(theta)`.
+    First,
+    /// Any later step: powers of `theta`.
+    Regular,
+}
+
+/// Exponents of the free coefficients: `d = dfix + Σ α_j θ^{dexp_j}`, `w = wfix + Σ β_j θ^{wexp_j}`.
+fn dexp(kind: Kind, j: usize) -> f64 {
+    match kind {
+        Kind::First => 2.5 + 0.5 * j as f64,
+        Kind::Regular => (j + 2) as f64,
+    }
+}
+fn wexp(kind: Kind, j: usize) -> f64 {
+    match kind {
+        Kind::First => 3.0 + 0.5 * j as f64,
+        Kind::Regular => (j + 1) as f64,
+    }
+}
+
+/// Powers of `theta`: `θ^{dexp_j}`, `θ^{dexp_j - 1}`, `θ^{dexp_j - 2}`, `θ^{wexp_j}`.
+struct Powers {
+    d0: [f64; S],
+    d1: [f64; S],
+    d2: [f64; S],
+    w: [f64; S],
+    /// `θ^{3/2}` (first step's fixed `w` term).
+    w15: f64,
+}
+
+fn powers(kind: Kind, th: f64) -> Powers {
+    let mut p = Powers {
+        d0: [0.0; S],
+        d1: [0.0; S],
+        d2: [0.0; S],
+        w: [0.0; S],
+        w15: 0.0,
+    };
+    match kind {
+        Kind::Regular => {
+            let mut x = 1.0;
+            for j in 0..S {
+                p.d2[j] = x; // θ^j
+                p.d1[j] = x * th; // θ^{j+1}
+                p.d0[j] = x * th * th; // θ^{j+2}
+                p.w[j] = x * th; // θ^{j+1}
+                x *= th;
+            }
+        }
+        Kind::First => {
+            let s = th.sqrt();
+            p.w15 = th * s;
+            let mut x = th * th * s; // θ^{2.5}
+            let mut y = th * th * th; // θ^3
+            for j in 0..S {
+                p.d0[j] = x;
+                p.w[j] = y;
+                x *= s;
+                y *= s;
+            }
+            // θ^{e-1} = θ^{1.5 + j/2}, θ^{e-2} = θ^{0.5 + j/2}, computed directly (θ may be 0)
+            let mut a = th * s;
+            let mut b = s;
+            for j in 0..S {
+                p.d1[j] = a;
+                p.d2[j] = b;
+                a *= s;
+                b *= s;
+            }
+        }
+    }
+    p
+}
+
+struct Basis {
+    /// `c_i^{dexp_j}` and `c_i^{wexp_j}`.
+    pd: Mat<S>,
+    pw: Mat<S>,
+    /// `α = vd_inv (D - dfix)`, `β = vw_inv (W - wfix)`.
+    vd_inv: Mat<S>,
+    vw_inv: Mat<S>,
+    /// Collocation: `D = dfix - h^2 A F`.
+    a: Mat<S>,
+}
+
+struct Tables {
+    c: [f64; S],
+    theta_star: f64,
+    reg: Basis,
+    first: Basis,
+}
+
+fn legendre(n: usize, y: f64) -> f64 {
+    let (mut p0, mut p1) = (1.0, y);
+    if n == 0 {
+        return 1.0;
+    }
+    for k in 1..n {
+        let kf = k as f64;
+        let p2 = ((2.0 * kf + 1.0) * y * p1 - kf * p0) / (kf + 1.0);
+        p0 = p1;
+        p1 = p2;
+    }
+    p1
+}
+
+/// Radau IIA nodes: zeros of `P_S(2x-1) - P_{S-1}(2x-1)` in `(0, 1]`.
+fn radau_nodes() -> [f64; S] {
+    let f = |x: f64| legendre(S, 2.0 * x - 1.0) - legendre(S - 1, 2.0 * x - 1.0);
+    let mut c = [1.0; S];
+    let mut n = 0;
+    let grid = 4000;
+    for g in 0..grid - 1 {
+        let (mut a, mut b) = (g as f64 / grid as f64, (g + 1) as f64 / grid as f64);
+        let (fa, fb) = (f(a), f(b));
+        if fa == 0.0 || fa * fb < 0.0 {
+            for _ in 0..200 {
+                let m = 0.5 * (a + b);
+                if f(a) * f(m) <= 0.0 {
+                    b = m;
+                } else {
+                    a = m;
+                }
+            }
+            if n < S - 1 {
+                c[n] = 0.5 * (a + b);
+                n += 1;
+            }
+        }
+    }
+    c
+}
+
+fn build_basis(kind: Kind, c: &[f64; S]) -> Basis {
+    let mut pd = [[0.0; S]; S];
+    let mut pw = [[0.0; S]; S];
+    let mut p2 = [[0.0; S]; S];
+    for i in 0..S {
+        let p = powers(kind, c[i]);
+        for j in 0..S {
+            let e = dexp(kind, j);
+            pd[i][j] = p.d0[j];
+            pw[i][j] = p.w[j];
+            p2[i][j] = e * (e - 1.0) * p.d2[j];
+        }
+    }
+    // The tables are fixed and well conditioned; failure here is a programming error.
+    let vd_inv = linalg::inverse(&pd).expect("collocation Vandermonde (d) is regular");
+    let vw_inv = linalg::inverse(&pw).expect("collocation Vandermonde (w) is regular");
+    let a = linalg::inverse(&linalg::mul(&p2, &vd_inv)).expect("collocation matrix is regular");
+    Basis {
+        pd,
+        pw,
+        vd_inv,
+        vw_inv,
+        a,
+    }
+}
+
+fn tables() -> &'static Tables {
+    static T: OnceLock<Tables> = OnceLock::new();
+    T.get_or_init(|| {
+        let c = radau_nodes();
+        // defect probe: the midpoint of the widest gap between 0, c_1, ..., c_S
+        let mut theta_star = 0.5 * c[0];
+        let mut gap = c[0];
+        for i in 1..S {
+            if c[i] - c[i - 1] > gap {
+                gap = c[i] - c[i - 1];
+                theta_star = 0.5 * (c[i] + c[i - 1]);
+            }
+        }
+        Tables {
+            c,
+            theta_star,
+            reg: build_basis(Kind::Regular, &c),
+            first: build_basis(Kind::First, &c),
+        }
+    })
+}
+
+// ---------------------------------------------------------------------------------------------
+// Kernel values for one (theta, h / tau)
+
+/// `Ĵ` at the exponents of a step: `one` (`ν = 1`, the `v_n h θ` term), `wfix` (`ν = 3/2`,
+/// first step), `d[j]` (`ν = dexp_j`), `w[j]` (`ν = wexp_j`).
+struct Jt {
+    one: f64,
+    wfix: f64,
+    d: [f64; S],
+    w: [f64; S],
+}
+
+fn jt(kind: Kind, x: f64) -> Jt {
+    match kind {
+        Kind::Regular => {
+            let mut t = [0.0; S + 2];
+            kernel::jhat_int(x, &mut t);
+            let mut j = Jt {
+                one: t[1],
+                wfix: 0.0,
+                d: [0.0; S],
+                w: [0.0; S],
+            };
+            j.d.copy_from_slice(&t[2..S + 2]);
+            j.w.copy_from_slice(&t[1..S + 1]);
+            j
+        }
+        Kind::First => {
+            // integer family 1, 2, ..., S+1 and half-integer family 3/2, 5/2, ..., S+1/2
+            let mut fi = [0.0; S + 1];
+            let mut fh = [0.0; S + 1];
+            kernel::jhat_family(1.0, x, &mut fi);
+            kernel::jhat_family(1.5, x, &mut fh);
+            let pick = |nu: f64| -> f64 {
+                if nu.fract() == 0.0 {
+                    fi[nu as usize - 1]
+                } else {
+                    fh[(nu - 1.5) as usize]
+                }
+            };
+            let mut j = Jt {
+                one: fi[0],
+                wfix: fh[0],
+                d: [0.0; S],
+                w: [0.0; S],
+            };
+            for k in 0..S {
+                j.d[k] = pick(dexp(kind, k));
+                j.w[k] = pick(wexp(kind, k));
+            }
+            j
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Steps and dense output
+
+/// One step's polynomial representation (compression or restitution).
+#[derive(Clone, Copy, Debug)]
+struct Seg {
+    t0: f64,
+    h: f64,
+    kind: Kind,
+    /// `d = dn + vh θ + Σ α_j θ^{dexp_j}` (`dn = 0` for the first step).
+    dn: f64,
+    vh: f64,
+    alpha: [f64; S],
+    /// Regular: `w_n` (constant term); first step: coefficient of `θ^{3/2}`.
+    wfix: f64,
+    beta: [f64; S],
+    q0: [f64; KMAX],
+    s0: [f64; KMAX],
+}
+
+/// Dense values at one instant.
+#[derive(Clone, Copy, Debug)]
+struct Pt {
+    d: f64,
+    v: f64,
+    dd: f64,
+    w: f64,
+    q: [f64; KMAX],
+    s: [f64; KMAX],
+}
+
+/// Largest number of coefficients of a dense kernel polynomial.
+const NT: usize = 64;
+/// `h / tau` above which the dense output uses the polynomial particular solution.
+/// The particular form loses about `log10(Σ_m m! λ^-m |α_m| / |y|)` digits: a few at `λ = 1/2`
+/// for the small high-order coefficients; the Taylor form needs ~`15` terms there.
+const PARTICULAR_LAMBDA: f64 = 0.5;
+/// `h / tau` up to which the first step's kernels have a dense series in `sqrt(θ)`.
+const SIGMA_LAMBDA: f64 = 2.0;
+
+/// Dense output of one hereditary integral on a regular step, for fast evaluation at any `θ`:
+/// `y(θ) = poly(θ) + amp exp(-λ θ)` with `λ = h / tau`. For `λ <= 1/2` `poly` is the Taylor
+/// series of the exact solution (`amp = 0`, terms decay like `λ^n / n!`); for `λ > 1/2` it is
+/// the polynomial particular solution `Y = Σ_j (-1/λ)^j (1/λ) P^(j+1)` of
+/// `y' = -λ y + P'` and `amp = y(0) - Y(0)`. Both are exact for the step's polynomial `P`.
+#[derive(Clone, Copy, Debug)]
+struct KernelPoly {
+    lam: f64,
+    amp: f64,
+    n: usize,
+    /// Coefficients of powers of `θ`, or of `sqrt(θ)` on the first step.
+    c: [f64; NT],
+}
+
+impl KernelPoly {
+    /// First step, `λ <= 2`: `y = Σ_n y_n σ^n`, `σ = sqrt(θ)`, `y_n = p_n - (2λ/n) y_(n-2)`,
+    /// `y_0 = 0`; `p` holds the forcing's coefficients of `σ^n`. `None` for `λ > 2`.
+    fn new_sigma(p: &[f64], lam: f64) -> Option<Self> {
+        if lam > SIGMA_LAMBDA {
+            return None;
+        }
+        let mut c = [0.0; NT];
+        let mut big: f64 = 0.0;
+        let mut n = 1;
+        while n < NT {
+            let pn = if n < p.len() { p[n] } else { 0.0 };
+            let prev = if n >= 2 { c[n - 2] } else { 0.0 };
+            c[n] = pn - 2.0 * lam / n as f64 * prev;
+            big = big.max(c[n].abs());
+            n += 1;
+            if n > p.len() && c[n - 1].abs() <= 1e-18 * big && c[n - 2].abs() <= 1e-18 * big {
+                break;
+            }
+        }
+        Some(KernelPoly {
+            lam,
+            amp: 0.0,
+            n,
+            c,
+        })
+    }
+
+    fn new(y0: f64, p: &[f64], lam: f64) -> Self {
+        let mut c = [0.0; NT];
+        if lam <= PARTICULAR_LAMBDA {
+            c[0] = y0;
+            let mut big = y0.abs();
+            let mut n = 1;
+            while n < NT {
+                let pn = if n < p.len() { p[n] } else { 0.0 };
+                c[n] = (-lam * c[n - 1] + n as f64 * pn) / n as f64;
+                big = big.max(c[n].abs());
+                n += 1;
+                if n >= p.len() && c[n - 1].abs() <= 1e-18 * big {
+                    break;
+                }
+            }
+            KernelPoly {
+                lam,
+                amp: 0.0,
+                n,
+                c,
+            }
+        } else {
+            let eps = 1.0 / lam;
+            // derivative coefficients, repeatedly
+            let mut der = [0.0; NT];
+            let deg = p.len() - 1;
+            for i in 0..deg {
+                der[i] = (i + 1) as f64 * p[i + 1];
+            }
+            let mut len = deg;
+            let mut fac = eps;
+            while len > 0 {
+                for i in 0..len {
+                    c[i] += fac * der[i];
+                }
+                for i in 0..len - 1 {
+                    der[i] = (i + 1) as f64 * der[i + 1];
+                }
+                len -= 1;
+                fac *= -eps;
+            }
+            KernelPoly {
+                lam,
+                amp: y0 - c[0],
+                n: deg.max(1),
+                c,
+            }
+        }
+    }
+
+    /// Value at `θ`; `ex = exp(-λ θ)` (only used when `amp != 0`), `x = θ` or `sqrt(θ)`.
+    #[inline]
+    fn eval(&self, x: f64, ex: f64) -> f64 {
+        let mut acc = 0.0;
+        for i in (0..self.n).rev() {
+            acc = acc * x + self.c[i];
+        }
+        if self.amp != 0.0 {
+            acc += self.amp * ex;
+        }
+        acc
+    }
+}
+
+struct Solver {
+    rtol: f64,
+    /// Newton step of `t_1` below which the Newton point is taken with first-order updates.
+    accept_step: f64,
+    dense: Vec<[KernelPoly; 2]>,
+    dense_ok: Vec<bool>,
+    c_inf: f64,
+    c: [f64; KMAX],
+    tau: [f64; KMAX],
+    k: usize,
+    glassy: f64,
+    tab: &'static Tables,
+    comp: Vec<Seg>,
+    t_m: f64,
+    evaluations: u64,
+}
+
+/// One converged compression or restitution step.
+struct StepOut {
+    seg: Seg,
+    f: [f64; S],
+    t1: [f64; S],
+    a: [f64; S],
+    err: f64,
+}
+
+impl Solver {
+    fn basis(&self, kind: Kind) -> &'static Basis {
+        match kind {
+            Kind::First => &self.tab.first,
+            Kind::Regular => &self.tab.reg,
+        }
+    }
+
+    /// Dense output of a step at `theta` (`with_w`: also `w` and `q_k`).
+    fn eval_seg(&self, seg: &Seg, th: f64, with_w: bool) -> Pt {
+        let kind = seg.kind;
+        let p = powers(kind, th);
+        let h = seg.h;
+        let mut d = seg.dn + seg.vh * th;
+        let mut v = seg.vh;
+        let mut dd = 0.0;
+        for j in 0..S {
+            let e = dexp(kind, j);
+            d += seg.alpha[j] * p.d0[j];
+            v += seg.alpha[j] * e * p.d1[j];
+            dd += seg.alpha[j] * e * (e - 1.0) * p.d2[j];
+        }
+        v /= h;
+        dd /= h * h;
+        let mut w = 0.0;
+        if with_w {
+            w = match kind {
+                Kind::Regular => seg.wfix,
+                Kind::First => seg.wfix * p.w15,
+            };
+            for j in 0..S {
+                w += seg.beta[j] * p.w[j];
+            }
+        }
+        let mut q = [0.0; KMAX];
+        let mut s = [0.0; KMAX];
+        for k in 0..self.k {
+            let x = th * h / self.tau[k];
+            let ex = (-x).exp();
+            let jj = jt(kind, x);
+            let mut sk = ex * seg.s0[k] + seg.vh * th * jj.one;
+            for j in 0..S {
+                sk += seg.alpha[j] * dexp(kind, j) * p.d0[j] * jj.d[j];
+            }
+            s[k] = sk;
+            if with_w {
+                let mut qk = ex * seg.q0[k];
+                if kind == Kind::First {
+                    qk += seg.wfix * 1.5 * p.w15 * jj.wfix;
+                }
+                for j in 0..S {
+                    qk += seg.beta[j] * wexp(kind, j) * p.w[j] * jj.w[j];
+                }
+                q[k] = qk;
+            }
+        }
+        Pt { d, v, dd, w, q, s }
+    }
+
+    /// Dense compression output at `t1 ∈ [0, t_m]`.
+    fn comp_at(&mut self, t1: f64) -> Pt {
+        self.evaluations += 1;
+        let i = self.comp.partition_point(|s| s.t0 <= t1).max(1) - 1;
+        let seg = &self.comp[i];
+        let th = ((t1 - seg.t0) / seg.h).max(0.0);
+        if self.dense.len() <= i * self.k || !self.dense_ok[i] {
+            return self.eval_seg(seg, th, true);
+        }
+        if seg.kind == Kind::First {
+            let p = powers(Kind::First, th);
+            let mut d = seg.vh * th;
+            let mut v = seg.vh;
+            for j in 0..S {
+                let e = dexp(Kind::First, j);
+                d += seg.alpha[j] * p.d0[j];
+                v += seg.alpha[j] * e * p.d1[j];
+            }
+            let mut q = [0.0; KMAX];
+            let mut s = [0.0; KMAX];
+            let sig = th.sqrt();
+            for k in 0..self.k {
+                let kp = &self.dense[i * self.k + k];
+                s[k] = kp[0].eval(sig, 0.0);
+                q[k] = kp[1].eval(sig, 0.0);
+            }
+            return Pt {
+                d,
+                v: v / seg.h,
+                dd: 0.0,
+                w: pow15(d),
+                q,
+                s,
+            };
+        }
+        // regular step: d = dn + vh θ + Σ α_j θ^(j+2), kernels from the precomputed polynomials
+        let mut d = 0.0;
+        let mut dv = 0.0;
+        for j in (0..S).rev() {
+            d = d * th + seg.alpha[j];
+            dv = dv * th + (j + 2) as f64 * seg.alpha[j];
+        }
+        let d = seg.dn + th * (seg.vh + th * d);
+        let v = (seg.vh + th * dv) / seg.h;
+        let mut q = [0.0; KMAX];
+        let mut s = [0.0; KMAX];
+        for k in 0..self.k {
+            let kp = &self.dense[i * self.k + k];
+            let ex = if kp[0].amp != 0.0 || kp[1].amp != 0.0 {
+                (-kp[0].lam * th).exp()
+            } else {
+                0.0
+            };
+            s[k] = kp[0].eval(th, ex);
+            q[k] = kp[1].eval(th, ex);
+        }
+        Pt {
+            d,
+            v,
+            dd: 0.0,
+            w: pow15(d),
+            q,
+            s,
+        }
+    }
+
+    /// Precompute the dense kernel polynomials of the regular compression steps.
+    fn build_dense(&mut self) {
+        let mut dense = Vec::with_capacity(self.comp.len() * self.k);
+        let mut ok = Vec::with_capacity(self.comp.len());
+        for seg in &self.comp {
+            if seg.kind == Kind::First {
+                // forcing coefficients of σ^n: d = vh σ^2 + Σ α_j σ^(5+j), w = wfix σ^3 + Σ β_j σ^(6+j)
+                let mut ps = [0.0; S + 6];
+                ps[2] = seg.vh;
+                ps[5..5 + S].copy_from_slice(&seg.alpha);
+                let mut pq = [0.0; S + 6];
+                pq[3] = seg.wfix;
+                pq[6..6 + S].copy_from_slice(&seg.beta);
+                let mut good = true;
+                for k in 0..self.k {
+                    let lam = seg.h / self.tau[k];
+                    match (
+                        KernelPoly::new_sigma(&ps, lam),
+                        KernelPoly::new_sigma(&pq, lam),
+                    ) {
+                        (Some(a), Some(b)) => dense.push([a, b]),
+                        _ => {
+                            good = false;
+                            let z = KernelPoly::new(0.0, &[0.0, 0.0], 0.0);
+                            dense.push([z, z]);
+                        }
+                    }
+                }
+                ok.push(good);
+                continue;
+            }
+            ok.push(true);
+            let mut ps = [0.0; S + 2];
+            ps[0] = seg.dn;
+            ps[1] = seg.vh;
+            ps[2..].copy_from_slice(&seg.alpha);
+            let mut pq = [0.0; S + 1];
+            pq[0] = seg.wfix;
+            pq[1..].copy_from_slice(&seg.beta);
+            for k in 0..self.k {
+                let lam = seg.h / self.tau[k];
+                dense.push([
+                    KernelPoly::new(seg.s0[k], &ps, lam),
+                    KernelPoly::new(seg.q0[k], &pq, lam),
+                ]);
+            }
+        }
+        self.dense = dense;
+        self.dense_ok = ok;
+    }
+
+    fn force_comp(&self, pt: &Pt) -> f64 {
+        let mut f = self.c_inf * pt.w;
+        for k in 0..self.k {
+            f += self.c[k] * pt.q[k];
+        }
+        K16 * f
+    }
+
+    /// One compression step of length `h` from `(t0, dn, vn, q0, s0)`.
+    #[allow(clippy::too_many_arguments)]
+    fn comp_step(
+        &mut self,
+        kind: Kind,
+        t0: f64,
+        dn: f64,
+        vn: f64,
+        q0: &[f64; KMAX],
+        s0: &[f64; KMAX],
+        h: f64,
+        f_n: f64,
+        pred: Option<&Seg>,
+    ) -> Result<StepOut> {
+        let b = self.basis(kind);
+        let c = self.tab.c;
+        let vh = vn * h;
+        let wfix = match kind {
+            Kind::Regular => pow15(dn),
+            Kind::First => pow15(vh),
+        };
+        let mut dfix = [0.0; S];
+        let mut wfix_n = [0.0; S];
+        for i in 0..S {
+            dfix[i] = dn + vh * c[i];
+            wfix_n[i] = match kind {
+                Kind::Regular => wfix,
+                Kind::First => wfix * c[i] * c[i].sqrt(),
+            };
+        }
+        // q_i = f0_i / c-weights + M (W - wfix): linear in W
+        let mut m = [[0.0; S]; S];
+        let mut f0 = [0.0; S];
+        for k in 0..self.k {
+            let ck = self.c[k];
+            for i in 0..S {
+                let x = c[i] * h / self.tau[k];
+                let jj = jt(kind, x);
+                let mut fi = (-x).exp() * q0[k];
+                if kind == Kind::First {
+                    fi += wfix * 1.5 * c[i] * c[i].sqrt() * jj.wfix;
+                }
+                f0[i] += ck * fi;
+                let mut l = [0.0; S];
+                for j in 0..S {
+                    l[j] = ck * wexp(kind, j) * b.pw[i][j] * jj.w[j];
+                }
+                for j in 0..S {
+                    let mut acc = 0.0;
+                    for (lj, vrow) in l.iter().zip(b.vw_inv.iter()) {
+                        acc += lj * vrow[j];
+                    }
+                    m[i][j] += acc;
+                }
+            }
+        }
+        // unknowns: the increments z_i = d(t_n + c_i h) - dfix_i (no cancellation for small h)
+        let regular = kind == Kind::Regular;
+        let forces = |z: &[f64; S]| {
+            let mut dw = [0.0; S]; // W_i - wfix_i
+            let mut w = [0.0; S];
+            for i in 0..S {
+                let di = (dfix[i] + z[i]).max(0.0);
+                w[i] = pow15(di);
+                dw[i] = if regular {
+                    pow15_increment(dn, vh * c[i] + z[i])
+                } else {
+                    w[i] - wfix_n[i]
+                };
+            }
+            let mut f = [0.0; S];
+            for i in 0..S {
+                let mut acc = self.c_inf * w[i] + f0[i];
+                for j in 0..S {
+                    acc += m[i][j] * dw[j];
+                }
+                f[i] = K16 * acc;
+            }
+            (dw, f)
+        };
+        let h2 = h * h;
+        let mut z = [0.0; S];
+        for i in 0..S {
+            let mut a1 = 0.0;
+            for j in 0..S {
+                a1 += b.a[i][j];
+            }
+            z[i] = match pred {
+                // extrapolate the previous step's polynomial to the new nodes
+                Some(p) => seg_d(p, (t0 + c[i] * h - p.t0) / p.h) - dfix[i],
+                None => -h2 * a1 * f_n,
+            };
+        }
+        let mut prev = f64::INFINITY;
+        let mut converged = false;
+        for _ in 0..FAST_NEWTON_MAX_ITER {
+            self.evaluations += S as u64;
+            let (_, f) = forces(&z);
+            let af = linalg::mul_vec(&b.a, &f);
+            let mut r = [0.0; S];
+            for i in 0..S {
+                r[i] = -(z[i] + h2 * af[i]);
+            }
+            let mut jf = [[0.0; S]; S];
+            for i in 0..S {
+                for j in 0..S {
+                    let dw = 1.5 * (dfix[j] + z[j]).max(0.0).sqrt();
+                    jf[i][j] = K16 * (m[i][j] + if i == j { self.c_inf } else { 0.0 }) * dw;
+                }
+            }
+            let mut jac = linalg::mul(&b.a, &jf);
+            for (i, row) in jac.iter_mut().enumerate() {
+                for x in row.iter_mut() {
+                    *x *= h2;
+                }
+                row[i] += 1.0;
+            }
+            let delta = linalg::solve(jac, r).ok_or(Error::NoConvergence {
+                what: "fast compression step (singular Newton matrix)",
+                iterations: 0,
+            })?;
+            let (dmax, scale) = update(&mut z, &delta);
+            if !dmax.is_finite() {
+                break;
+            }
+            if newton_done(dmax, scale, prev, self.rtol) {
+                converged = true;
+                break;
+            }
+            prev = dmax;
+        }
+        if !converged {
+            return Err(Error::NoConvergence {
+                what: "fast compression step (Newton)",
+                iterations: FAST_NEWTON_MAX_ITER as u64,
+            });
+        }
+        let (rw, f) = forces(&z);
+        let rd = z;
+        let seg = Seg {
+            t0,
+            h,
+            kind,
+            dn,
+            vh,
+            alpha: linalg::mul_vec(&b.vd_inv, &rd),
+            wfix,
+            beta: linalg::mul_vec(&b.vw_inv, &rw),
+            q0: *q0,
+            s0: *s0,
+        };
+        // defect of the collocation polynomial between the nodes
+        let pt = self.eval_seg(&seg, self.tab.theta_star, true);
+        let d1 = pt.dd + self.force_comp(&pt);
+        let d2 = K16 * self.glassy * (pow15(pt.d) - pt.w).abs();
+        let mut a = [0.0; S];
+        for i in 0..S {
+            a[i] = (dfix[i] + z[i]).max(0.0).sqrt();
+        }
+        Ok(StepOut {
+            seg,
+            f,
+            t1: [0.0; S],
+            a,
+            err: h * (d1.abs() + d2),
+        })
+    }
+
+    /// Ting/Graham root `t_1` at time `t` with indentation `d` and `S_k(t) = s_k`; returns
+    /// `(t_1, F, d(t_1))`. `t_1 = 0` (and `F = 0`) once `c_inf d + Σ c_k s_k <= 0`.
+    fn t1_root(&mut self, t: f64, d: f64, s: &[f64; KMAX], guess: f64) -> Result<(f64, f64, f64)> {
+        let mut phi0 = self.c_inf * d;
+        for k in 0..self.k {
+            phi0 += self.c[k] * s[k];
+        }
+        if phi0 <= 0.0 {
+            return Ok((0.0, 0.0, 0.0));
+        }
+        let tm = self.t_m;
+        let (mut lo, mut hi) = (0.0, tm);
+        let mut x = if guess > 0.0 && guess < tm {
+            guess
+        } else {
+            0.5 * tm
+        };
+        let mut hi_checked = false;
+        for _ in 0..tolerances::ROOT_MAX_ITER {
+            let pt = self.comp_at(x);
+            let mut phi = self.c_inf * (d - pt.d);
+            let mut g = self.c_inf;
+            let mut f = self.c_inf * pt.w;
+            for k in 0..self.k {
+                let ek = (-(t - x) / self.tau[k]).exp();
+                phi += self.c[k] * (s[k] - ek * pt.s[k]);
+                g += self.c[k] * ek;
+                f += self.c[k] * ek * pt.q[k];
+            }
+            let dphi = -pt.v * g;
+            if phi > 0.0 {
+                lo = x;
+                if x == tm || (!hi_checked && hi - x < 1e-15 * tm) {
+                    return Ok((x, K16 * f, pt.d));
+                }
+            } else {
+                hi = x;
+                hi_checked = true;
+            }
+            let newton = x - phi / dphi;
+            let step = (newton - x).abs();
+            if step <= 1e-14 * tm || hi - lo <= 1e-14 * tm {
+                return Ok((x, K16 * f, pt.d));
+            }
+            if step <= self.accept_step && newton >= lo && newton <= hi {
+                // quadratic convergence: the Newton point is exact to ~step^2; move F and d
+                // there to first order (dF/dt_1 = (16/3) G_eq(t - t_1) w'(t_1))
+                let dx = newton - x;
+                let df = K16 * 1.5 * pt.d.max(0.0).sqrt() * pt.v * g;
+                return Ok((newton, K16 * f + df * dx, pt.d + pt.v * dx));
+            }
+            x = if newton > lo && newton < hi {
+                newton
+            } else if !hi_checked && lo > 0.0 {
+                // root may sit at t_m itself (right after the turn)
+                if lo < tm {
+                    0.5 * (lo + hi)
+                } else {
+                    tm
+                }
+            } else {
+                0.5 * (lo + hi)
+            };
+        }
+        Err(Error::NoConvergence {
+            what: "fast Ting root t_1",
+            iterations: tolerances::ROOT_MAX_ITER as u64,
+        })
+    }
+
+    /// One restitution step of length `h`.
+    #[allow(clippy::too_many_arguments)]
+    fn rest_step(
+        &mut self,
+        t0: f64,
+        dn: f64,
+        vn: f64,
+        s0: &[f64; KMAX],
+        h: f64,
+        f_n: f64,
+        t1_guess: &[f64; S],
+        pred: Option<&Seg>,
+    ) -> Result<StepOut> {
+        let b = &self.tab.reg;
+        let c = self.tab.c;
+        let vh = vn * h;
+        let mut dfix = [0.0; S];
+        for i in 0..S {
+            dfix[i] = dn + vh * c[i];
+        }
+        // S_{k,i} = sfix_{k,i} + Σ_j N^k_{ij} (D_j - dfix_j); keep Σ_k c_k N^k for the Jacobian
+        let mut sfix = [[0.0; S]; KMAX];
+        let mut nk = [[[0.0; S]; S]; KMAX];
+        let mut cn = [[0.0; S]; S];
+        for k in 0..self.k {
+            for i in 0..S {
+                let x = c[i] * h / self.tau[k];
+                let jj = jt(Kind::Regular, x);
+                sfix[k][i] = (-x).exp() * s0[k] + vh * c[i] * jj.one;
+                let mut l = [0.0; S];
+                for j in 0..S {
+                    l[j] = dexp(Kind::Regular, j) * b.pd[i][j] * jj.d[j];
+                }
+                for j in 0..S {
+                    let mut acc = 0.0;
+                    for (lj, vrow) in l.iter().zip(b.vd_inv.iter()) {
+                        acc += lj * vrow[j];
+                    }
+                    nk[k][i][j] = acc;
+                    cn[i][j] += self.c[k] * acc;
+                }
+            }
+        }
+        let h2 = h * h;
+        let mut z = [0.0; S];
+        for i in 0..S {
+            let mut a1 = 0.0;
+            for j in 0..S {
+                a1 += b.a[i][j];
+            }
+            z[i] = match pred {
+                // extrapolate the previous step's polynomial to the new nodes
+                Some(p) => seg_d(p, (t0 + c[i] * h - p.t0) / p.h) - dfix[i],
+                None => -h2 * a1 * f_n,
+            };
+        }
+        let mut t1 = *t1_guess;
+        let mut f = [0.0; S];
+        let mut d1 = [0.0; S];
+        let mut prev = f64::INFINITY;
+        let mut converged = false;
+        for it in 0..=FAST_NEWTON_MAX_ITER {
+            for i in 0..S {
+                let mut si = [0.0; KMAX];
+                for k in 0..self.k {
+                    let mut acc = sfix[k][i];
+                    for j in 0..S {
+                        acc += nk[k][i][j] * z[j];
+                    }
+                    si[k] = acc;
+                }
+                let (r1, fi, di) = self.t1_root(t0 + c[i] * h, dfix[i] + z[i], &si, t1[i])?;
+                t1[i] = r1;
+                f[i] = fi;
+                d1[i] = di;
+            }
+            if converged || it == FAST_NEWTON_MAX_ITER {
+                break;
+            }
+            let af = linalg::mul_vec(&b.a, &f);
+            let mut r = [0.0; S];
+            for i in 0..S {
+                r[i] = -(z[i] + h2 * af[i]);
+            }
+            let mut jf = [[0.0; S]; S];
+            for i in 0..S {
+                if t1[i] > 0.0 {
+                    let g = 8.0 * d1[i].max(0.0).sqrt();
+                    for j in 0..S {
+                        jf[i][j] = g * (cn[i][j] + if i == j { self.c_inf } else { 0.0 });
+                    }
+                }
+            }
+            let mut jac = linalg::mul(&b.a, &jf);
+            for (i, row) in jac.iter_mut().enumerate() {
+                for x in row.iter_mut() {
+                    *x *= h2;
+                }
+                row[i] += 1.0;
+            }
+            let delta = linalg::solve(jac, r).ok_or(Error::NoConvergence {
+                what: "fast restitution step (singular Newton matrix)",
+                iterations: 0,
+            })?;
+            let (dmax, scale) = update(&mut z, &delta);
+            if !dmax.is_finite() {
+                break;
+            }
+            converged = newton_done(dmax, scale, prev, self.rtol);
+            prev = dmax;
+        }
+        if !converged {
+            return Err(Error::NoConvergence {
+                what: "fast restitution step (Newton)",
+                iterations: FAST_NEWTON_MAX_ITER as u64,
+            });
+        }
+        let rd = z;
+        let seg = Seg {
+            t0,
+            h,
+            kind: Kind::Regular,
+            dn,
+            vh,
+            alpha: linalg::mul_vec(&b.vd_inv, &rd),
+            wfix: 0.0,
+            beta: [0.0; S],
+            q0: [0.0; KMAX],
+            s0: *s0,
+        };
+        let ts = self.tab.theta_star;
+        let pt = self.eval_seg(&seg, ts, false);
+        // guess for t_1 at the probe: interpolate the node values linearly
+        let mut g = t1[0];
+        for i in 1..S {
+            if c[i] >= ts {
+                let w = (ts - c[i - 1]) / (c[i] - c[i - 1]);
+                g = t1[i - 1] + w * (t1[i] - t1[i - 1]);
+                break;
+            }
+        }
+        let (_, fs, _) = self.t1_root(t0 + ts * h, pt.d, &pt.s, g)?;
+        let mut a = [0.0; S];
+        for i in 0..S {
+            a[i] = d1[i].max(0.0).sqrt();
+        }
+        Ok(StepOut {
+            seg,
+            f,
+            t1,
+            a,
+            err: h * (pt.dd + fs).abs(),
+        })
+    }
+
+    /// `g(θ) = c_inf d + Σ c_k S_k` on a restitution step (contact while `g > 0`).
+    fn contact_measure(&self, seg: &Seg, th: f64) -> (f64, Pt) {
+        let pt = self.eval_seg(seg, th, false);
+        let mut g = self.c_inf * pt.d;
+        for k in 0..self.k {
+            g += self.c[k] * pt.s[k];
+        }
+        (g, pt)
+    }
+
+    /// Root of `g` in `(0, hi]` by bisection–secant (Illinois), `g(0) > 0 >= g(hi)`.
+    fn end_root(&self, seg: &Seg, hi: f64, g_hi: f64) -> Result<f64> {
+        let (mut a, mut ga) = (0.0, self.contact_measure(seg, 0.0).0);
+        let (mut b, mut gb) = (hi, g_hi);
+        let mut side = 0;
+        for _ in 0..tolerances::ROOT_MAX_ITER {
+            let x = (a * gb - b * ga) / (gb - ga);
+            let x = if x > a && x < b { x } else { 0.5 * (a + b) };
+            let (gx, _) = self.contact_measure(seg, x);
+            if gx > 0.0 {
+                a = x;
+                ga = gx;
+                if side == 1 {
+                    gb *= 0.5;
+                }
+                side = 1;
+            } else {
+                b = x;
+                gb = gx;
+                if side == -1 {
+                    ga *= 0.5;
+                }
+                side = -1;
+            }
+            if b - a <= 1e-15 * hi || gx == 0.0 {
+                return Ok(x);
+            }
+        }
+        Err(Error::NoConvergence {
+            what: "fast end of contact",
+            iterations: tolerances::ROOT_MAX_ITER as u64,
+        })
+    }
+}
+
+/// `d` of a step's polynomial at `θ` (any `θ >= 0`, also beyond the step for prediction).
+fn seg_d(seg: &Seg, th: f64) -> f64 {
+    let p = powers(seg.kind, th);
+    let mut d = seg.dn + seg.vh * th;
+    for j in 0..S {
+        d += seg.alpha[j] * p.d0[j];
+    }
+    d
+}
+
+/// `max(x, 0)^(3/2)`.
+#[inline]
+fn pow15(x: f64) -> f64 {
+    let x = x.max(0.0);
+    x * x.sqrt()
+}
+
+/// `(d + delta)^(3/2) - d^(3/2)` without cancellation for small `delta`.
+fn pow15_increment(d: f64, delta: f64) -> f64 {
+    let a = (d + delta).max(0.0);
+    let b = d.max(0.0);
+    let den = a * a.sqrt() + b * b.sqrt();
+    let diff = if d >= 0.0 && d + delta >= 0.0 {
+        delta
+    } else {
+        a - b
+    };
+    if den > 0.0 {
+        diff * (a * a + a * b + b * b) / den
+    } else {
+        0.0
+    }
+}
+
+/// Add a Newton correction; returns `(max |delta|, max |z|)`.
+fn update(z: &mut [f64; S], delta: &[f64; S]) -> (f64, f64) {
+    let mut dmax: f64 = 0.0;
+    let mut scale: f64 = 0.0;
+    for i in 0..S {
+        z[i] += delta[i];
+        dmax = dmax.max(delta[i].abs());
+        scale = scale.max(z[i].abs());
+    }
+    (dmax, scale)
+}
+
+/// Newton stop: a correction at rounding level of the increments, or stagnation near it.
+fn newton_done(dmax: f64, scale: f64, prev: f64, rtol: f64) -> bool {
+    let tol = (1e-4 * rtol).max(1e-14);
+    dmax <= tol * scale || (dmax <= 1e-10 * scale && dmax > 0.3 * prev) || scale == 0.0
+}
+
+/// Running maximum of the force with a parabola through the three samples around the peak.
+#[derive(Default)]
+struct PeakTracker {
+    prev: [(f64, f64); 2],
+    n: usize,
+    max: f64,
+}
+
+impl PeakTracker {
+    fn push(&mut self, t: f64, f: f64) {
+        if self.n >= 2 {
+            let (t0, f0) = self.prev[0];
+            let (t1, f1) = self.prev[1];
+            if f1 >= f0 && f1 >= f && f1 >= self.max && t1 > t0 && t > t1 {
+                let d01 = (f1 - f0) / (t1 - t0);
+                let d12 = (f - f1) / (t - t1);
+                let cc = (d12 - d01) / (t - t0);
+                if cc < 0.0 {
+                    let bb = d01 + cc * (t1 - t0);
+                    self.max = self.max.max(f1 - bb * bb / (4.0 * cc));
+                }
+            }
+        }
+        self.max = self.max.max(f);
+        self.prev = [self.prev[1], (t, f)];
+        self.n += 1;
+    }
+}
+
+fn step_factor(ratio: f64) -> f64 {
+    if ratio <= 0.0 || !ratio.is_finite() {
+        return if ratio <= 0.0 { 3.0 } else { 0.2 };
+    }
+    (0.9 * ratio.powf(-1.0 / (S as f64 + 1.0))).clamp(0.2, 3.0)
+}
+
+/// Impact of the unit sphere (`m = R = v0 = 1`) on a half-space with the equivalent
+/// relaxation function `prony` (moduli in units of `G_inf`, times in units of `L / v0`),
+/// solved by Lee–Radok / Ting–Graham on `d(t)` (see the module docs).
+///
+/// `rtol` is the requested relative accuracy of the CoR (`MIN_RTOL <= rtol <= MAX_RTOL` of
+/// [`crate::tolerances`]); `history` asks for `(t, d, v, F, a)` at the step ends. The outcome
+/// is canonical: `rebound_velocity = cor`, `dissipated_energy = (1 - e^2)/2`,
+/// `max_contact_radius = sqrt(d_max)`, solver `"fast"`.
+///
+/// Elastic input (no Prony terms) is answered in closed form (Hertz, theory notes §6):
+/// `k = (16/3) c_inf`, `d_max = (5/(4k))^(2/5)`, `t_c = 2.9432751843247047 d_max`, `e = 1`.
+///
+/// ```
+/// # use mdr_impact::{Prony, fast};
+/// let hertz = Prony { relaxed: 1.0, terms: vec![] };
+/// let out = fast::impact(&hertz, 1e-6, false).unwrap();
+/// assert_eq!(out.cor, 1.0);
+/// // d_max = (15/64)^(2/5) for c_inf = 1
+/// assert!((out.max_indentation - (15.0f64 / 64.0).powf(0.4)).abs() < 1e-15);
+/// ```
+///
+/// # Errors
+/// [`Error::OutOfRange`] for a bad `rtol` or series (non-finite, `c_inf <= 0`, negative
+/// coefficient or time, more than [`FAST_MAX_TERMS`] terms); [`Error::NoConvergence`] /
+/// [`Error::WorkLimit`] when a bounded iteration does not finish.
+pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
+    if !(tolerances::MIN_RTOL..=tolerances::MAX_RTOL).contains(&rtol) {
+        return Err(Error::OutOfRange {
+            field: "rtol",
+            value: rtol,
+            allowed: "MIN_RTOL <= rtol <= MAX_RTOL (1e-12 ..= 0.1)",
+        });
+    }
+    if !(prony.relaxed > 0.0 && prony.relaxed.is_finite()) {
+        return Err(Error::OutOfRange {
+            field: "relaxed modulus",
+            value: prony.relaxed,
+            allowed: "0 < c_inf < inf",
+        });
+    }
+    let mut c_inf = prony.relaxed;
+    let mut c = [0.0; KMAX];
+    let mut tau = [0.0; KMAX];
+    let mut k = 0;
+    for term in &prony.terms {
+        if !(term.coefficient >= 0.0 && term.coefficient.is_finite()) {
+            return Err(Error::OutOfRange {
+                field: "prony coefficient",
+                value: term.coefficient,
+                allowed: "0 <= c_k < inf",
+            });
+        }
+        if !(term.tau >= 0.0) {
+            return Err(Error::OutOfRange {
+                field: "prony tau",
+                value: term.tau,
+                allowed: "0 <= tau_k <= inf",
+            });
+        }
+        if term.coefficient == 0.0 || term.tau == 0.0 {
+            continue; // relaxes instantly or carries nothing
+        }
+        if term.tau.is_infinite() {
+            c_inf += term.coefficient; // never relaxes: part of the elastic modulus
+            continue;
+        }
+        if k == KMAX {
+            return Err(Error::OutOfRange {
+                field: "prony terms",
+                value: prony.terms.len() as f64,
+                allowed: "at most FAST_MAX_TERMS = 8 terms",
+            });
+        }
+        c[k] = term.coefficient;
+        tau[k] = term.tau;
+        k += 1;
+    }
+    if k == 0 {
+        return Ok(hertz(c_inf, history));
+    }
+    let glassy = c_inf + c[..k].iter().sum::<f64>();
+    let mut s = Solver {
+        rtol,
+        accept_step: 0.0,
+        c_inf,
+        c,
+        tau,
+        k,
+        glassy,
+        tab: tables(),
+        comp: Vec::with_capacity(64),
+        dense: Vec::new(),
+        dense_ok: Vec::new(),
+        t_m: 0.0,
+        evaluations: 0,
+    };
+    run(&mut s, rtol, history)
+}
+
+/// Elastic closed form (theory notes §6) in canonical units.
+fn hertz(c_inf: f64, history: bool) -> Outcome {
+    let k = K16 * c_inf;
+    let d_max = (1.25 / k).powf(0.4);
+    let tc = HERTZ_CONTACT_FACTOR * d_max;
+    Outcome {
+        cor: 1.0,
+        rebound_velocity: 1.0,
+        contact_time: tc,
+        max_indentation: d_max,
+        time_of_max_indentation: 0.5 * tc,
+        max_force: k * d_max.powf(1.5),
+        max_contact_radius: d_max.sqrt(),
+        dissipated_energy: 0.0,
+        cor_error_estimate: Some(0.0),
+        history: history.then(|| {
+            let mut h = History::default();
+            h.push(0.0, 0.0, 1.0, 0.0, 0.0);
+            h.push(0.5 * tc, d_max, 0.0, k * d_max.powf(1.5), d_max.sqrt());
+            h.push(tc, 0.0, -1.0, 0.0, 0.0);
+            h
+        }),
+        work: Work::default(),
+        solver: SOLVER_NAME,
+    }
+}
+
+fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
+    let tol = rtol * FAST_LOCAL_TOL_FACTOR;
+    let mut hist = history.then(History::default);
+    if let Some(hh) = hist.as_mut() {
+        hh.push(0.0, 0.0, 1.0, 0.0, 0.0);
+    }
+    let mut peak = PeakTracker::default();
+    peak.push(0.0, 0.0);
+    let mut steps = 0u64;
+    let mut err_sum = 0.0;
+    // glassy Hertz time of maximum indentation as the first length scale
+    let d0 = (1.25 / (K16 * s.glassy)).powf(0.4);
+    let tm0 = 0.5 * HERTZ_CONTACT_FACTOR * d0;
+    let mut h = 0.1 * tm0 * (rtol / 1e-6).powf(1.0 / (S as f64 + 2.0)).min(1.0);
+
+    // ---- compression
+    let (mut t, mut d, mut v, mut f_n) = (0.0_f64, 0.0_f64, 1.0_f64, 0.0_f64);
+    let mut q = [0.0; KMAX];
+    let mut sk = [0.0; KMAX];
+    let mut kind = Kind::First;
+    let (t_m, d_m, v_m, s_m, f_m);
+    loop {
+        steps += 1;
+        if steps > FAST_MAX_STEPS {
+            return Err(Error::WorkLimit {
+                solver: SOLVER_NAME,
+                what: "steps",
+                needed: steps,
+                limit: FAST_MAX_STEPS,
+            });
+        }
+        let pred = s.comp.last().copied();
+        let out = match s.comp_step(kind, t, d, v, &q, &sk, h, f_n, pred.as_ref()) {
+            Ok(o) => o,
+            Err(Error::NoConvergence { .. }) => {
+                h *= 0.25;
+                continue;
+            }
+            Err(e) => return Err(e),
+        };
+        let ratio = out.err / tol;
+        if !(ratio <= 1.0) {
+            h *= step_factor(ratio);
+            continue;
+        }
+        err_sum += out.err;
+        let seg = out.seg;
+        let end = s.eval_seg(&seg, 1.0, true);
+        if end.v > 0.0 {
+            for i in 0..S {
+                peak.push(t + s.tab.c[i] * h, out.f[i]);
+            }
+            s.comp.push(seg);
+            t += h;
+            d = end.d;
+            v = end.v;
+            q = end.q;
+            sk = end.s;
+            f_n = out.f[S - 1];
+            if let Some(hh) = hist.as_mut() {
+                hh.push(t, d, v, f_n, d.max(0.0).sqrt());
+            }
+            kind = Kind::Regular;
+            h *= step_factor(ratio);
+            continue;
+        }
+        // v = 0 inside this step: Newton–bisection on v(θ)
+        let (mut lo, mut hi) = (0.0, 1.0);
+        let mut th = 0.5;
+        let mut pt = s.eval_seg(&seg, th, true);
+        for it in 0..=tolerances::ROOT_MAX_ITER {
+            if it == tolerances::ROOT_MAX_ITER {
+                return Err(Error::NoConvergence {
+                    what: "fast time of maximum indentation",
+                    iterations: it as u64,
+                });
+            }
+            if pt.v > 0.0 {
+                lo = th;
+            } else {
+                hi = th;
+            }
+            let newton = th - pt.v / (pt.dd * h);
+            let next = if newton > lo && newton < hi {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+            let done = (next - th).abs() <= 1e-15 || hi - lo <= 1e-15;
+            th = next;
+            pt = s.eval_seg(&seg, th, true);
+            if done {
+                break;
+            }
+        }
+        for i in 0..S {
+            if s.tab.c[i] < th {
+                peak.push(t + s.tab.c[i] * h, out.f[i]);
+            }
+        }
+        s.comp.push(seg);
+        t_m = t + th * h;
+        d_m = pt.d;
+        v_m = pt.v;
+        s_m = pt.s;
+        f_m = s.force_comp(&pt);
+        peak.push(t_m, f_m);
+        if let Some(hh) = hist.as_mut() {
+            hh.push(t_m, d_m, v_m, f_m, d_m.max(0.0).sqrt());
+        }
+        h = (th * h).max(0.2 * h);
+        break;
+    }
+    s.t_m = t_m;
+    s.accept_step = (1e-4 * rtol).sqrt().min(1e-4) * t_m;
+    s.build_dense();
+
+    // ---- restitution
+    let (mut t, mut d, mut v, mut f_n) = (t_m, d_m, v_m, f_m);
+    let mut sk = s_m;
+    // t_1 at the last three nodes (None: mirror image of the elastic case, t_1 = 2 t_m - t)
+    let mut t1_hist: Option<[(f64, f64); 3]> = None;
+    let mut prev_rest: Option<Seg> = None;
+    let mut ending = false;
+    let mut end_iter = 0usize;
+    let (v_end, t_end);
+    loop {
+        steps += 1;
+        if steps > FAST_MAX_STEPS {
+            return Err(Error::WorkLimit {
+                solver: SOLVER_NAME,
+                what: "steps",
+                needed: steps,
+                limit: FAST_MAX_STEPS,
+            });
+        }
+        let mut guess = [0.0; S];
+        for i in 0..S {
+            let tt = t + s.tab.c[i] * h;
+            guess[i] = match t1_hist {
+                // quadratic through the last three node values of t_1(t)
+                Some([(ta, ya), (tb, yb), (tc, yc)]) => {
+                    ya * (tt - tb) * (tt - tc) / ((ta - tb) * (ta - tc))
+                        + yb * (tt - ta) * (tt - tc) / ((tb - ta) * (tb - tc))
+                        + yc * (tt - ta) * (tt - tb) / ((tc - ta) * (tc - tb))
+                }
+                None => t_m - (tt - t_m),
+            }
+            .clamp(0.0, t_m);
+        }
+        let out = match s.rest_step(t, d, v, &sk, h, f_n, &guess, prev_rest.as_ref()) {
+            Ok(o) => o,
+            Err(Error::NoConvergence { .. }) => {
+                h *= 0.25;
+                ending = false;
+                continue;
+            }
+            Err(e) => return Err(e),
+        };
+        let ratio = out.err / tol;
+        let seg = out.seg;
+        let (g1, end) = s.contact_measure(&seg, 1.0);
+        // the end of contact first: a step across it sees a kink (F = 0 beyond) and would be
+        // rejected for the wrong reason
+        if g1 <= 0.0 || ending {
+            end_iter += 1;
+            if end_iter > FAST_END_MAX_ITER {
+                return Err(Error::NoConvergence {
+                    what: "fast end of contact (last step fit)",
+                    iterations: end_iter as u64,
+                });
+            }
+            let th = if g1 <= 0.0 {
+                s.end_root(&seg, 1.0, g1)?
+            } else {
+                // the step ends just before the contact: extrapolate its polynomial
+                let mut hi = 1.0;
+                let mut ghi = g1;
+                let mut found = false;
+                for _ in 0..8 {
+                    hi *= 1.25;
+                    ghi = s.contact_measure(&seg, hi).0;
+                    if ghi <= 0.0 {
+                        found = true;
+                        break;
+                    }
+                }
+                if !found {
+                    ending = false;
+                    f64::NAN
+                } else {
+                    s.end_root(&seg, hi, ghi)?
+                }
+            };
+            if th.is_finite() {
+                if (th - 1.0).abs() <= 1e-9 {
+                    if !(ratio <= 1.0) {
+                        // the last step is too long for the accuracy: approach in smaller steps
+                        h *= step_factor(ratio).min(0.7);
+                        ending = false;
+                        continue;
+                    }
+                    err_sum += out.err;
+                    for i in 0..S {
+                        peak.push(t + s.tab.c[i] * h, out.f[i]);
+                    }
+                    let pt = s.eval_seg(&seg, th.min(1.0), false);
+                    v_end = pt.v;
+                    t_end = t + th * h;
+                    if let Some(hh) = hist.as_mut() {
+                        hh.push(t_end, pt.d, pt.v, 0.0, 0.0);
+                    }
+                    break;
+                }
+                ending = true;
+                h *= th;
+                continue;
+            }
+        }
+        if !(ratio <= 1.0) {
+            h *= step_factor(ratio);
+            ending = false;
+            continue;
+        }
+        // accept
+        err_sum += out.err;
+        for i in 0..S {
+            peak.push(t + s.tab.c[i] * h, out.f[i]);
+        }
+        let node = |i: usize| (t + s.tab.c[i] * h, out.t1[i]);
+        t1_hist = Some([node(S - 3), node(S - 2), node(S - 1)]);
+        prev_rest = Some(seg);
+        t += h;
+        d = end.d;
+        v = end.v;
+        sk = end.s;
+        f_n = out.f[S - 1];
+        if let Some(hh) = hist.as_mut() {
+            hh.push(t, d, v, f_n, out.a[S - 1]);
+        }
+        if !(d.is_finite() && v.is_finite()) {
+            return Err(Error::NonFinite {
+                what: "fast restitution state",
+                value: d + v,
+            });
+        }
+        h *= step_factor(ratio);
+    }
+    let cor = -v_end;
+    if !cor.is_finite() {
+        return Err(Error::NonFinite {
+            what: "fast coefficient of restitution",
+            value: cor,
+        });
+    }
+    Ok(Outcome {
+        cor,
+        rebound_velocity: cor,
+        contact_time: t_end,
+        max_indentation: d_m,
+        time_of_max_indentation: t_m,
+        max_force: peak.max,
+        max_contact_radius: d_m.max(0.0).sqrt(),
+        dissipated_energy: 0.5 * (1.0 - cor * cor),
+        cor_error_estimate: Some(err_sum / cor.abs().max(f64::MIN_POSITIVE)),
+        history: hist,
+        work: Work {
+            steps,
+            elements: 0,
+            element_updates: 0,
+            evaluations: s.evaluations,
+            levels: 1,
+        },
+        solver: SOLVER_NAME,
+    })
+}
