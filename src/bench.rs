@@ -45,12 +45,14 @@ pub fn sweep(quick: bool) -> Vec<(SolverKind, Vec<f64>)> {
             (SolverKind::MdrEuler, vec![1e-2]),
             (SolverKind::Mdr, vec![1e-3]),
             (SolverKind::Reference, vec![1e-6]),
+            (SolverKind::Fast, vec![1e-6]),
         ];
     }
     vec![
         (SolverKind::MdrEuler, vec![1e-2, 3e-3, 1e-3, 3e-4, 1e-4]),
         (SolverKind::Mdr, vec![1e-3, 1e-4, 1e-5, 1e-6, 1e-7]),
         (SolverKind::Reference, vec![1e-4, 1e-6, 1e-8, 1e-10]),
+        (SolverKind::Fast, vec![1e-4, 1e-6, 1e-8, 1e-10]),
     ]
 }
 

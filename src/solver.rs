@@ -4,6 +4,7 @@
 use crate::error::{Error, Result};
 use crate::impact::{Impact, Outcome};
 use crate::material::ElementNetwork;
+use crate::fast;
 use crate::mdr;
 use crate::theory;
 use crate::tolerances;
@@ -21,11 +22,14 @@ pub enum SolverKind {
     Mdr,
     /// Lee–Radok/Ting reference solution (independent of the MDR foundation).
     Reference,
+    /// Reduced solver: O(1) state per Prony term (all elements share one rate and leave last in,
+    /// first out), stiff terms integrated exactly.
+    Fast,
 }
 
 impl SolverKind {
     /// Every name accepted on the command line and in scenes.
-    pub const NAMES: &'static [&'static str] = &["auto", "mdr-euler", "mdr", "reference"];
+    pub const NAMES: &'static [&'static str] = &["auto", "mdr-euler", "mdr", "reference", "fast"];
 
     /// The command-line / scene name.
     pub fn name(self) -> &'static str {
@@ -34,6 +38,7 @@ impl SolverKind {
             SolverKind::MdrEuler => "mdr-euler",
             SolverKind::Mdr => "mdr",
             SolverKind::Reference => "reference",
+            SolverKind::Fast => "fast",
         }
     }
 }
@@ -46,6 +51,7 @@ impl std::str::FromStr for SolverKind {
             "mdr-euler" => SolverKind::MdrEuler,
             "mdr" => SolverKind::Mdr,
             "reference" => SolverKind::Reference,
+            "fast" => SolverKind::Fast,
             _ => {
                 return Err(Error::Unsupported(format!(
                     "unknown solver '{s}': expected one of {}",
@@ -129,6 +135,11 @@ impl SolveOptions {
 }
 
 /// Solve an impact. Elastic materials use the Hertz closed form whatever the solver.
+///
+/// In nearly elastic cases a solver's discretisation error can push the CoR above 1; since
+/// `e <= 1` holds exactly (a passive material dissipates a non-negative energy), such a value is
+/// projected onto `(0, 1]` (`e = 1`, no dissipated energy); the error estimate is kept as
+/// computed, and the projection only ever reduces the error.
 pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
     opts.validate()?;
     if impact.material().is_elastic() && opts.resolution.is_none() {
@@ -140,8 +151,13 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
         check_outcome(&o)?;
         return Ok(o);
     }
-    let canonical = solve_canonical(impact, opts)?;
+    let mut canonical = solve_canonical(impact, opts)?;
     check_outcome(&canonical)?;
+    if canonical.cor > 1.0 {
+        canonical.cor = 1.0;
+        canonical.rebound_velocity = 1.0;
+        canonical.dissipated_energy = 0.0;
+    }
     Ok(canonical.to_si(impact))
 }
 
@@ -156,11 +172,31 @@ pub fn canonical_material(impact: &Impact) -> mdr::CanonicalMaterial {
 
 fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
     let material = canonical_material(impact);
-    let scheme = match opts.solver {
-        SolverKind::MdrEuler => mdr::Scheme::Euler,
-        SolverKind::Mdr | SolverKind::Auto => mdr::Scheme::Exponential,
-        SolverKind::Reference => {
-            return theory::impact(&material.prony, opts.rtol, opts.history);
+    let scheme = match (opts.solver, opts.resolution) {
+        (SolverKind::MdrEuler, _) => mdr::Scheme::Euler,
+        (SolverKind::Mdr, _) | (SolverKind::Auto, Some(_)) => mdr::Scheme::Exponential,
+        (SolverKind::Reference, _) | (SolverKind::Auto, None) if opts.history => {
+            // histories on a uniform grid, forces evaluated from the dense solution
+            return theory::reference::impact_sampled(
+                &material.prony,
+                opts.rtol.max(1e-13),
+                tolerances::HISTORY_SAMPLES,
+            );
+        }
+        (SolverKind::Reference, _) => {
+            return theory::impact(&material.prony, opts.rtol, false);
+        }
+        (SolverKind::Fast, _) => return fast::impact(&material.prony, opts.rtol, opts.history),
+        (SolverKind::Auto, None) => {
+            // The cheapest solver for any rtol is the reduced one; should it fail to reach the
+            // accuracy, the reference solver (a different integrator) answers instead.
+            return match fast::impact(&material.prony, opts.rtol, opts.history) {
+                Ok(o) => Ok(o),
+                Err(Error::AccuracyNotReached { .. }) | Err(Error::NoConvergence { .. }) => {
+                    theory::impact(&material.prony, opts.rtol.max(1e-13), opts.history)
+                }
+                Err(e) => Err(e),
+            };
         }
     };
     match opts.resolution {

@@ -33,3 +33,6 @@ pub const INDENT_STEPS: usize = 4000;
 pub const HERTZ_HISTORY_SAMPLES: usize = 401;
 /// Safety factor of the adaptive MDR driver: the error estimate must be below this times rtol.
 pub const MDR_SAFETY: f64 = 0.5;
+/// Uniform samples of an impact history from the reference solver (requested by `auto` or
+/// `reference` with histories).
+pub const HISTORY_SAMPLES: usize = 1001;

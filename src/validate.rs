@@ -60,6 +60,8 @@ pub fn settings() -> Vec<SolverSetting> {
         s(SolverKind::MdrEuler, 1e-3, 400_000_000),
         s(SolverKind::Mdr, 1e-4, 4_000_000_000),
         s(SolverKind::Mdr, 1e-6, 4_000_000_000),
+        s(SolverKind::Fast, 1e-6, 0),
+        s(SolverKind::Fast, 1e-10, 0),
         s(SolverKind::Reference, 1e-8, 0),
     ]
 }
@@ -71,6 +73,16 @@ pub fn external_settings() -> Vec<SolverSetting> {
             solver: SolverKind::Mdr,
             rtol: 1e-4,
             work_limit: 4_000_000_000,
+        },
+        SolverSetting {
+            solver: SolverKind::Fast,
+            rtol: 1e-6,
+            work_limit: 0,
+        },
+        SolverSetting {
+            solver: SolverKind::Fast,
+            rtol: 1e-10,
+            work_limit: 0,
         },
         SolverSetting {
             solver: SolverKind::Reference,

@@ -602,10 +602,7 @@ fn accept(deltas: &[f64], p_max: f64, tiny: f64) -> Option<f64> {
 /// the elements every other level, since its time error is first order). With `delta_L` the
 /// change of the CoR between levels, a level is accepted when the differences look asymptotic
 /// and the error estimate of [`accept`] is below `MDR_SAFETY * rtol |e|`.
-///
-/// In nearly elastic cases the discretisation error can push the CoR of the foundation above 1;
-/// since `e <= 1` holds exactly (the dissipation is non-negative), the accepted value is
-/// projected onto `(0, 1]` (the error estimate is kept as computed).
+
 pub fn solve_rtol(
     scheme: Scheme,
     material: &CanonicalMaterial,
@@ -659,8 +656,6 @@ pub fn solve_rtol(
                 if est <= tolerances::MDR_SAFETY * rtol * scale {
                     o.work = work;
                     o.cor_error_estimate = Some(last_est);
-                    o.cor = o.cor.min(1.0);
-                    o.dissipated_energy = 0.5 * (1.0 - o.cor * o.cor);
                     return Ok(o);
                 }
             } else if let Some(&d) = deltas.last() {
