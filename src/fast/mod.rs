@@ -1447,6 +1447,7 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
     let mut prev_rest: Option<Seg> = None;
     let mut ending = false;
     let mut end_iter = 0usize;
+    let mut last_miss = f64::INFINITY;
     let (v_end, t_end);
     loop {
         steps += 1;
@@ -1517,18 +1518,24 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
                 }
             };
             if th.is_finite() {
-                if (th - 1.0).abs() <= 1e-9 {
+                let miss = (th - 1.0).abs();
+                // converged, or stalled at rounding level (the end is located to far better
+                // than the step's accuracy needs: F vanishes there like (t_end - t)^(3/2))
+                let done = miss <= 1e-9 || (miss <= 1e-6 && miss >= 0.5 * last_miss);
+                last_miss = miss;
+                if done {
                     if !(ratio <= 1.0) {
                         // the last step is too long for the accuracy: approach in smaller steps
                         h *= step_factor(ratio).min(0.7);
                         ending = false;
+                        last_miss = f64::INFINITY;
                         continue;
                     }
                     err_sum += out.err;
                     for i in 0..S {
                         peak.push(t + s.tab.c[i] * h, out.f[i]);
                     }
-                    let pt = s.eval_seg(&seg, th.min(1.0), false);
+                    let pt = s.eval_seg(&seg, th, false);
                     v_end = pt.v;
                     t_end = t + th * h;
                     if let Some(hh) = hist.as_mut() {
@@ -1547,6 +1554,7 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
             continue;
         }
         // accept
+        end_iter = 0;
         err_sum += out.err;
         for i in 0..S {
             peak.push(t + s.tab.c[i] * h, out.f[i]);
