@@ -139,7 +139,7 @@ fn work_is_pinned() {
     );
 }
 const PINNED_STEPS: u64 = 30;
-const PINNED_EVALUATIONS: u64 = 488;
+const PINNED_EVALUATIONS: u64 = 388;
 
 #[test]
 fn errors_are_reported() {

@@ -1018,6 +1018,16 @@ impl Solver {
             }
             converged = newton_done(dmax, scale, prev, self.rtol);
             prev = dmax;
+            if converged {
+                // the last correction is at the accuracy floor: move the forces to first order
+                // instead of solving the Ting roots again (t_1, d(t_1) keep an O(delta) lag,
+                // used only for guesses and the contact radius of the history)
+                let df = linalg::mul_vec(&jf, &delta);
+                for i in 0..S {
+                    f[i] += df[i];
+                }
+                break;
+            }
         }
         if !converged {
             return Err(Error::NoConvergence {
