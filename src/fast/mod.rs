@@ -35,6 +35,18 @@
 //! nodes (error per step); the end of compression (`v = 0`) is found on the dense output, the
 //! last restitution step is fitted to end where `t_1 = 0`.
 //!
+//! # Accuracy and cost (measured 2026-11-22, release build, one core, shared machine)
+//! Against an independent Python reference table (660 groups, `nu ∈ [-0.9, 0.5]`,
+//! `p2 ∈ [1e-4, 1e2]`, `p3 ∈ [1e-3, 1e4]`, reference error ~1e-13): max relative CoR error
+//! 4.2e-7 at `rtol = 1e-6` and 5.5e-11 at `rtol = 1e-10`, about 35 and 115 steps on average.
+//! Against the brute-force integration in `tests/fast_independent.rs`: 5e-11 at `rtol = 1e-8`.
+//! Cost over the paper's range (`tests/fast_core.rs`, ignored timing test): median ~80–95 µs per
+//! impact at `rtol = 1e-6` and ~220 µs at `1e-10` (max a few hundred µs; timings on a loaded
+//! machine are noisy). Most of it is the Ting roots of the restitution phase (~20 dense
+//! evaluations of the compression history per step). The step-size control (defect at one
+//! probe point, error per step `<= 0.1 rtol`) is conservative by ~5–10x for most impacts, but
+//! not for the most dissipative ones (`e ~ 0.01`), where the error relative to `e` is largest.
+//!
 //! Independent of [`crate::mdr`] and [`crate::theory`]; shares only [`Prony`] with them.
 
 // Index loops mirror the formulas (i: node, j: basis function, k: Prony term).
