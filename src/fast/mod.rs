@@ -1225,7 +1225,10 @@ fn step_factor(ratio: f64) -> f64 {
 /// `rtol` is the requested relative accuracy of the CoR (`MIN_RTOL <= rtol <= MAX_RTOL` of
 /// [`crate::tolerances`]); `history` asks for `(t, d, v, F, a)` at the step ends. The outcome
 /// is canonical: `rebound_velocity = cor`, `dissipated_energy = (1 - e^2)/2`,
-/// `max_contact_radius = sqrt(d_max)`, solver `"fast"`.
+/// `max_contact_radius = sqrt(d_max)`, solver `"fast"`. `cor_error_estimate` is the sum of the
+/// accepted local error estimates divided by `e` (typically 2–10x above the actual error);
+/// `max_force` is the largest node force, refined by a parabola through its neighbours;
+/// `work.steps` counts attempted steps, `work.evaluations` force and history evaluations.
 ///
 /// Elastic input (no Prony terms) is answered in closed form (Hertz, theory notes §6):
 /// `k = (16/3) c_inf`, `d_max = (5/(4k))^(2/5)`, `t_c = 2.9432751843247047 d_max`, `e = 1`.
