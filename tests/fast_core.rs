@@ -1,0 +1,253 @@
+//! The `fast` solver: elastic limits, outcome consistency, convergence in `rtol`, errors, and a
+//! wide random sweep without NaN. The throwaway timing over the paper's range is `#[ignore]`d:
+//! `cargo test --release --test fast_core -- --ignored --nocapture`.
+
+use mdr_impact::{fast, Error, Groups, Impact, Prony, PronyTerm};
+
+const K16: f64 = 16.0 / 3.0;
+const HERTZ_TC: f64 = 2.9432751843247047;
+
+fn canonical(nu: f64, p2: f64, p3: f64) -> Prony {
+    Impact::from_groups(Groups::new(nu, p2, p3).unwrap())
+        .unwrap()
+        .canonical_relaxation()
+}
+
+fn hertz(modulus: f64) -> (f64, f64) {
+    let d = (1.25 / (K16 * modulus)).powf(0.4);
+    (d, HERTZ_TC * d)
+}
+
+#[test]
+fn elastic_closed_form() {
+    for c_inf in [0.3, 1.0, 7.5] {
+        let out = fast::impact(
+            &Prony {
+                relaxed: c_inf,
+                terms: vec![],
+            },
+            1e-6,
+            true,
+        )
+        .unwrap();
+        let (d, tc) = hertz(c_inf);
+        assert_eq!(out.cor, 1.0);
+        assert_eq!(out.rebound_velocity, 1.0);
+        assert!((out.max_indentation - d).abs() <= 1e-15 * d);
+        assert!((out.contact_time - tc).abs() <= 1e-15 * tc);
+        assert!((out.max_force - K16 * c_inf * d.powf(1.5)).abs() <= 1e-14);
+        assert_eq!(out.dissipated_energy, 0.0);
+        assert_eq!(out.solver, "fast");
+    }
+}
+
+/// Frozen (`tau -> inf`) and instantaneous (`tau -> 0`) relaxation through the time stepping
+/// (not the closed form): Hertz with the glassy and with the relaxed modulus.
+#[test]
+fn elastic_limits_through_the_time_stepping() {
+    for (tau, modulus) in [(1e12, 2.0), (1e-12, 1.0)] {
+        let prony = Prony {
+            relaxed: 1.0,
+            terms: vec![PronyTerm {
+                coefficient: 1.0,
+                tau,
+            }],
+        };
+        for rtol in [1e-6, 1e-10] {
+            let out = fast::impact(&prony, rtol, false).unwrap();
+            let (d, tc) = hertz(modulus);
+            assert!((out.cor - 1.0).abs() < rtol, "tau {tau}: e = {}", out.cor);
+            assert!(
+                (out.contact_time - tc).abs() < 10.0 * rtol * tc,
+                "{} {tc}",
+                out.contact_time
+            );
+            assert!((out.max_indentation - d).abs() < 10.0 * rtol * d);
+            assert!((out.time_of_max_indentation - 0.5 * tc).abs() < 10.0 * rtol * tc);
+        }
+    }
+}
+
+#[test]
+fn outcome_is_consistent() {
+    let prony = canonical(0.3, 0.05, 1.0);
+    let out = fast::impact(&prony, 1e-8, true).unwrap();
+    let e = out.cor;
+    assert!(e > 0.0 && e < 1.0);
+    assert_eq!(out.rebound_velocity, e);
+    assert_eq!(out.dissipated_energy, 0.5 * (1.0 - e * e));
+    assert_eq!(out.max_contact_radius, out.max_indentation.sqrt());
+    assert!(out.time_of_max_indentation > 0.0 && out.time_of_max_indentation < out.contact_time);
+    let est = out.cor_error_estimate.unwrap();
+    assert!(est.is_finite() && est >= 0.0);
+    let h = out.history.unwrap();
+    assert!(h.len() > 3);
+    assert!(h.t.windows(2).all(|w| w[1] > w[0]));
+    assert_eq!(*h.t.last().unwrap(), out.contact_time);
+    assert!((h.v.last().unwrap() + e).abs() < 1e-15);
+    // a(t) = sqrt(d) in compression, sqrt(d(t_1)) in restitution: never above the maximum
+    assert!(h
+        .a
+        .iter()
+        .all(|&a| a <= out.max_contact_radius * (1.0 + 1e-12)));
+    assert!(h
+        .force
+        .iter()
+        .all(|&f| f >= 0.0 && f <= out.max_force * (1.0 + 1e-9)));
+    assert!(h
+        .d
+        .iter()
+        .all(|&d| d <= out.max_indentation * (1.0 + 1e-12)));
+    assert!(out.work.steps > 0 && out.work.evaluations > out.work.steps);
+}
+
+/// The CoR converges as `rtol` shrinks, and each result is within `rtol` of the tightest one.
+#[test]
+fn converges_in_rtol() {
+    for (nu, p2, p3) in [
+        (0.45, 1e-3, 10.0),
+        (0.0, 1.0, 1.0),
+        (-0.9, 1e-4, 1e-2),
+        (0.5, 1e-2, 1e3),
+    ] {
+        let prony = canonical(nu, p2, p3);
+        let best = fast::impact(&prony, 1e-12, false).unwrap().cor;
+        let mut prev_err = f64::INFINITY;
+        for rtol in [1e-4, 1e-6, 1e-8, 1e-10] {
+            let out = fast::impact(&prony, rtol, false).unwrap();
+            let err = ((out.cor - best) / best).abs();
+            assert!(
+                err <= rtol,
+                "({nu}, {p2}, {p3}) rtol {rtol:e}: error {err:.2e}"
+            );
+            assert!(
+                err <= prev_err.max(1e-12),
+                "not converging: {err:.2e} after {prev_err:.2e}"
+            );
+            prev_err = err;
+        }
+    }
+}
+
+/// Work counters of one solve, pinned so that a change in work is noticed.
+#[test]
+fn work_is_pinned() {
+    let out = fast::impact(&canonical(0.3, 1.0, 1.0), 1e-6, false).unwrap();
+    assert_eq!(
+        (out.work.steps, out.work.evaluations),
+        (PINNED_STEPS, PINNED_EVALUATIONS)
+    );
+}
+const PINNED_STEPS: u64 = 30;
+const PINNED_EVALUATIONS: u64 = 388;
+
+#[test]
+fn errors_are_reported() {
+    let ok = Prony {
+        relaxed: 1.0,
+        terms: vec![PronyTerm {
+            coefficient: 1.0,
+            tau: 1.0,
+        }],
+    };
+    for rtol in [0.0, 1e-13, 0.2, f64::NAN] {
+        assert!(matches!(
+            fast::impact(&ok, rtol, false),
+            Err(Error::OutOfRange { field: "rtol", .. })
+        ));
+    }
+    let mut bad = ok.clone();
+    bad.relaxed = 0.0;
+    assert!(matches!(
+        fast::impact(&bad, 1e-6, false),
+        Err(Error::OutOfRange { .. })
+    ));
+    let mut bad = ok.clone();
+    bad.terms[0].coefficient = -1.0;
+    assert!(matches!(
+        fast::impact(&bad, 1e-6, false),
+        Err(Error::OutOfRange { .. })
+    ));
+    let mut bad = ok.clone();
+    bad.terms[0].tau = f64::NAN;
+    assert!(matches!(
+        fast::impact(&bad, 1e-6, false),
+        Err(Error::OutOfRange { .. })
+    ));
+    let mut bad = ok.clone();
+    bad.terms = vec![ok.terms[0]; fast::FAST_MAX_TERMS + 1];
+    assert!(matches!(
+        fast::impact(&bad, 1e-6, false),
+        Err(Error::OutOfRange { .. })
+    ));
+}
+
+/// Log-uniform random groups far beyond the paper's range: always a finite CoR in (0, 1].
+#[test]
+fn wide_random_sweep_without_nan() {
+    let mut seed: u64 = 0x9e37_79b9_7f4a_7c15;
+    let mut rnd = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for i in 0..400 {
+        let nu = -0.99 + 1.49 * rnd();
+        let p2 = 10f64.powf(-6.0 + 12.0 * rnd());
+        let p3 = 10f64.powf(-6.0 + 12.0 * rnd());
+        let rtol = [1e-3, 1e-6, 1e-10][i % 3];
+        let prony = canonical(nu, p2, p3);
+        let out = fast::impact(&prony, rtol, i % 7 == 0)
+            .unwrap_or_else(|e| panic!("({nu}, {p2}, {p3}) rtol {rtol:e}: {e}"));
+        for x in [
+            out.cor,
+            out.contact_time,
+            out.max_indentation,
+            out.max_force,
+        ] {
+            assert!(x.is_finite() && x > 0.0, "({nu}, {p2}, {p3}): {out:?}");
+        }
+        assert!(
+            out.cor <= 1.0 + 10.0 * rtol,
+            "({nu}, {p2}, {p3}): e = {}",
+            out.cor
+        );
+    }
+}
+
+/// Throwaway timing over the paper's range (nu in (-1, 0.5], p2 in [1e-4, 1e2], p3 in
+/// [1e-3, 1e4]): median and max microseconds per impact at rtol 1e-6 and 1e-10.
+#[test]
+#[ignore = "timing, release build: cargo test --release --test fast_core -- --ignored --nocapture"]
+fn timing_over_the_paper_range() {
+    let mut cases = vec![];
+    for nu in [-0.9, -0.5, 0.0, 0.3, 0.45, 0.49, 0.499, 0.5] {
+        for i in 0..=6 {
+            for j in 0..=7 {
+                let p2 = 10f64.powf(-4.0 + i as f64);
+                let p3 = 10f64.powf(-3.0 + j as f64);
+                cases.push(canonical(nu, p2, p3));
+            }
+        }
+    }
+    for rtol in [1e-6, 1e-10] {
+        let mut us = vec![];
+        for prony in &cases {
+            let reps = 5;
+            let t = std::time::Instant::now();
+            for _ in 0..reps {
+                std::hint::black_box(fast::impact(prony, rtol, false).unwrap());
+            }
+            us.push(t.elapsed().as_secs_f64() * 1e6 / reps as f64);
+        }
+        us.sort_by(f64::total_cmp);
+        println!(
+            "rtol {rtol:e}: {} impacts, median {:.1} us, p90 {:.1} us, max {:.1} us",
+            us.len(),
+            us[us.len() / 2],
+            us[us.len() * 9 / 10],
+            us[us.len() - 1]
+        );
+    }
+}
