@@ -206,6 +206,22 @@ pub fn write_csv(path: &Path, points: &[BenchPoint]) -> Result<()> {
     })
 }
 
+/// Aggregate of one (solver, rtol) over the cases: geometric-mean median time, worst CoR error,
+/// worst force error; `None` when the setting was refused on every case.
+fn aggregate(points: &[BenchPoint], solver: SolverKind, rtol: f64) -> Option<(f64, f64, f64)> {
+    let sel: Vec<&BenchPoint> = points
+        .iter()
+        .filter(|p| p.solver == solver && p.rtol == rtol)
+        .collect();
+    if sel.is_empty() {
+        return None;
+    }
+    let t = (sel.iter().map(|p| p.median_seconds.ln()).sum::<f64>() / sel.len() as f64).exp();
+    let e = sel.iter().map(|p| p.cor_error).fold(0.0, f64::max);
+    let f = sel.iter().map(|p| p.force_error).fold(0.0, f64::max);
+    Some((t, e, f))
+}
+
 /// Log-log work-precision plot: per solver, the worst CoR error over the cases against the
 /// median time per impact (geometric mean over the cases), one point per rtol.
 pub fn plot(path: &Path, points: &[BenchPoint]) -> Result<()> {
@@ -213,21 +229,9 @@ pub fn plot(path: &Path, points: &[BenchPoint]) -> Result<()> {
     for (solver, rtols) in sweep(false) {
         let mut pts = Vec::new();
         for rtol in rtols {
-            let sel: Vec<&BenchPoint> = points
-                .iter()
-                .filter(|p| p.solver == solver && p.rtol == rtol)
-                .collect();
-            if sel.is_empty() {
-                continue;
+            if let Some((t, e, _)) = aggregate(points, solver, rtol) {
+                pts.push((t.log10(), e.max(1e-16).log10()));
             }
-            let t =
-                (sel.iter().map(|p| p.median_seconds.ln()).sum::<f64>() / sel.len() as f64).exp();
-            let e = sel
-                .iter()
-                .map(|p| p.cor_error)
-                .fold(0.0, f64::max)
-                .max(1e-16);
-            pts.push((t.log10(), e.log10()));
         }
         if !pts.is_empty() {
             series.push((solver.name().to_string(), pts));
@@ -259,26 +263,21 @@ pub fn summary(points: &[BenchPoint], machine: &str, batch: Option<(usize, f64)>
     );
     for (solver, rtols) in sweep(false) {
         for rtol in rtols {
-            let sel: Vec<&BenchPoint> = points
-                .iter()
-                .filter(|p| p.solver == solver && p.rtol == rtol)
-                .collect();
-            if sel.is_empty() {
-                let _ = writeln!(
-                    s,
-                    "| {solver} | {rtol:.0e} | refused (work limit) | - | - |"
-                );
-                continue;
+            match aggregate(points, solver, rtol) {
+                Some((t, e, f)) => {
+                    let _ = writeln!(
+                        s,
+                        "| {solver} | {rtol:.0e} | {} | {e:.1e} | {f:.1e} |",
+                        fmt_time(t)
+                    );
+                }
+                None => {
+                    let _ = writeln!(
+                        s,
+                        "| {solver} | {rtol:.0e} | refused (work limit) | - | - |"
+                    );
+                }
             }
-            let t =
-                (sel.iter().map(|p| p.median_seconds.ln()).sum::<f64>() / sel.len() as f64).exp();
-            let e = sel.iter().map(|p| p.cor_error).fold(0.0, f64::max);
-            let f = sel.iter().map(|p| p.force_error).fold(0.0, f64::max);
-            let _ = writeln!(
-                s,
-                "| {solver} | {rtol:.0e} | {} | {e:.1e} | {f:.1e} |",
-                fmt_time(t)
-            );
         }
     }
     if let Some((rows, secs)) = batch {

@@ -2,9 +2,9 @@
 //! [`Impact`] to a solver in canonical units and maps the outcome back to SI.
 
 use crate::error::{Error, Result};
+use crate::fast;
 use crate::impact::{Impact, Outcome};
 use crate::material::ElementNetwork;
-use crate::fast;
 use crate::mdr;
 use crate::theory;
 use crate::tolerances;
@@ -285,25 +285,16 @@ pub fn force_curve(
     method: IndentMethod,
 ) -> Result<Vec<ForceCurveRow>> {
     let prony = material.equivalent_relaxation();
+    let row = |t, d, a, force| ForceCurveRow { t, d, a, force };
     let rows: Vec<ForceCurveRow> = match method {
         IndentMethod::Theory => theory::response(&prony, radius, history, times)?
             .into_iter()
-            .map(|s| ForceCurveRow {
-                t: s.t,
-                d: s.d,
-                a: s.a,
-                force: s.force,
-            })
+            .map(|s| row(s.t, s.d, s.a, s.force))
             .collect(),
         IndentMethod::Mdr => {
             mdr::indent::response(&prony, radius, history, times, Default::default())?
                 .into_iter()
-                .map(|s| ForceCurveRow {
-                    t: s.t,
-                    d: s.d,
-                    a: s.a,
-                    force: s.force,
-                })
+                .map(|s| row(s.t, s.d, s.a, s.force))
                 .collect()
         }
     };

@@ -415,26 +415,36 @@ pub fn prescribed_refinement(
         .collect()
 }
 
-/// Impact refinement of an MDR scheme at a fixed element count, doubling the steps: CoR
-/// differences between successive levels (time order), or at a fixed step count doubling the
-/// elements (spacing order).
+/// What a refinement study doubles per level.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Refine {
+    /// Time steps only (time order).
+    Steps,
+    /// Elements only (spacing order).
+    Elements,
+    /// Both.
+    Both,
+}
+
+/// Impact refinement of an MDR scheme from the resolution `base` = (elements, steps), doubling
+/// per level what `refine` says: relative CoR errors against the reference per level.
 pub fn impact_refinement(
     case: &Case,
     scheme: mdr::Scheme,
-    vary_steps: bool,
+    refine: Refine,
     base: (usize, usize),
     levels: usize,
-) -> Result<Vec<(usize, usize, f64)>> {
+) -> Result<Refinement> {
     let imp = case.impact()?;
     let mat = canonical_material(&imp);
     let layout = mdr::pilot(&mat.prony)?;
     let reference = reference_outcome(case)?.cor;
     (0..levels)
         .map(|l| {
-            let (n, m) = if vary_steps {
-                (base.0, base.1 << l)
-            } else {
-                (base.0 << l, base.1)
+            let (n, m) = match refine {
+                Refine::Steps => (base.0, base.1 << l),
+                Refine::Elements => (base.0 << l, base.1),
+                Refine::Both => (base.0 << l, base.1 << l),
             };
             let o = mdr::run_resolution(scheme, &mat, &layout, n, m, false)?;
             Ok((n, m, (o.cor - reference) / reference))
@@ -854,17 +864,23 @@ pub fn run(opts: &ValidateOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
         (
             "impact, mdr: steps doubled (4096 elements)",
             2.0,
-            impact_refinement(case, mdr::Scheme::Exponential, true, (4096, 32), 5)?,
+            impact_refinement(case, mdr::Scheme::Exponential, Refine::Steps, (4096, 32), 5)?,
         ),
         (
             "impact, mdr: elements doubled (16384 steps)",
             2.0,
-            impact_refinement(case, mdr::Scheme::Exponential, false, (16, 16384), 5)?,
+            impact_refinement(
+                case,
+                mdr::Scheme::Exponential,
+                Refine::Elements,
+                (16, 16384),
+                5,
+            )?,
         ),
         (
             "impact, mdr-euler: steps and elements doubled",
             1.0,
-            impact_refinement_both(case, mdr::Scheme::Euler, (64, 512), 5)?,
+            impact_refinement(case, mdr::Scheme::Euler, Refine::Both, (64, 512), 5)?,
         ),
     ];
     tick();
@@ -975,26 +991,6 @@ pub fn units() -> u64 {
     let hist = 2;
     let external = EXTERNAL_TABLE.lines().count().saturating_sub(1) * external_settings().len();
     (IMPACTS.len() * settings().len() + 1 + external + IMPACTS.len() * hist + 5) as u64
-}
-
-/// Both resolutions doubled per level.
-pub fn impact_refinement_both(
-    case: &Case,
-    scheme: mdr::Scheme,
-    base: (usize, usize),
-    levels: usize,
-) -> Result<Vec<(usize, usize, f64)>> {
-    let imp = case.impact()?;
-    let mat = canonical_material(&imp);
-    let layout = mdr::pilot(&mat.prony)?;
-    let reference = reference_outcome(case)?.cor;
-    (0..levels)
-        .map(|l| {
-            let (n, m) = (base.0 << l, base.1 << l);
-            let o = mdr::run_resolution(scheme, &mat, &layout, n, m, false)?;
-            Ok((n, m, (o.cor - reference) / reference))
-        })
-        .collect()
 }
 
 fn rel(file: &Path, base: &Path) -> String {

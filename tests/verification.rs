@@ -19,7 +19,7 @@ fn assert_orders(name: &str, errors: &[f64], expected: f64, skip: usize) {
 #[test]
 fn mdr_time_order_is_two() {
     let case = impact_case("dissipative-nu045").unwrap();
-    let s = impact_refinement(case, Scheme::Exponential, true, (4096, 32), 4).unwrap();
+    let s = impact_refinement(case, Scheme::Exponential, Refine::Steps, (4096, 32), 4).unwrap();
     let e: Vec<f64> = s.iter().map(|x| x.2.abs()).collect();
     assert_orders("mdr steps", &e, 2.0, 0);
 }
@@ -27,7 +27,7 @@ fn mdr_time_order_is_two() {
 #[test]
 fn mdr_spacing_order_is_two() {
     let case = impact_case("dissipative-nu045").unwrap();
-    let s = impact_refinement(case, Scheme::Exponential, false, (16, 16384), 4).unwrap();
+    let s = impact_refinement(case, Scheme::Exponential, Refine::Elements, (16, 16384), 4).unwrap();
     let e: Vec<f64> = s.iter().map(|x| x.2.abs()).collect();
     assert_orders("mdr elements", &e, 2.0, 0);
 }
@@ -35,7 +35,7 @@ fn mdr_spacing_order_is_two() {
 #[test]
 fn mdr_euler_order_is_one() {
     let case = impact_case("dissipative-nu045").unwrap();
-    let s = impact_refinement_both(case, Scheme::Euler, (64, 512), 4).unwrap();
+    let s = impact_refinement(case, Scheme::Euler, Refine::Both, (64, 512), 4).unwrap();
     let e: Vec<f64> = s.iter().map(|x| x.2.abs()).collect();
     assert_orders("mdr-euler", &e, 1.0, 0);
 }

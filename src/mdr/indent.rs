@@ -1,7 +1,7 @@
 //! Displacement-controlled MDR: the foundation driven by a prescribed indentation history, so
 //! that the MDR and the Lee–Radok/Ting theory can be compared force for force.
 //!
-//! The exponential scheme of [`super::exponential`] is exact for an indentation that is linear
+//! The exponential scheme (`mdr::exponential`) is exact for an indentation that is linear
 //! over each step, so the only time error is the piecewise-linear interpolation of `d(t)`
 //! (second order); the element spacing gives a second-order error as in the impact.
 //! The step grid contains every requested time and the history's kinks, so outputs are

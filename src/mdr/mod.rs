@@ -601,8 +601,7 @@ fn accept(deltas: &[f64], p_max: f64, tiny: f64) -> Option<f64> {
 /// (and, for the second-order [`Scheme::Exponential`], the elements; for [`Scheme::Euler`],
 /// the elements every other level, since its time error is first order). With `delta_L` the
 /// change of the CoR between levels, a level is accepted when the differences look asymptotic
-/// and the error estimate of [`accept`] is below `MDR_SAFETY * rtol |e|`.
-
+/// and the error estimate of `accept` (private, documented at its definition) is below `MDR_SAFETY * rtol |e|`.
 pub fn solve_rtol(
     scheme: Scheme,
     material: &CanonicalMaterial,
