@@ -1,26 +1,58 @@
-//! Criterion benches of the solver kernels on representative cases.
-use criterion::{criterion_group, criterion_main, Criterion};
-use mdr_impact::{solve, Groups, Impact, SolveOptions, SolverKind};
+//! Criterion benches of the solver kernels on catalogue cases (one per regime): each solver at
+//! a representative accuracy, and the MDR foundation at a fixed resolution (no adaptivity), so a
+//! change in the cost of a kernel is seen apart from a change in the step-size control.
+//! The work-precision study across accuracies is `mdr-impact bench`.
 
-fn bench(c: &mut Criterion) {
-    let cases = [
-        ("dissipative nu=0.45", 0.45, 0.01, 1.0),
-        ("incompressible", 0.5, 0.001, 10.0),
-    ];
-    for (name, nu, p2, p3) in cases {
-        let imp = Impact::from_groups(Groups::new(nu, p2, p3).unwrap()).unwrap();
-        for rtol in [1e-4, 1e-6] {
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use mdr_impact::catalogue::impact_case;
+use mdr_impact::{mdr, solve, solver, SolveOptions, SolverKind};
+
+const CASES: &[&str] = &[
+    "dissipative-nu045",
+    "near-incompressible-nu049",
+    "stiff-tau-1e-6",
+];
+
+fn solvers(c: &mut Criterion) {
+    let mut g = c.benchmark_group("impact");
+    g.sample_size(20);
+    for id in CASES {
+        let imp = impact_case(id).unwrap().impact().unwrap();
+        for (solver, rtol) in [
+            (SolverKind::Fast, 1e-6),
+            (SolverKind::Fast, 1e-10),
+            (SolverKind::Reference, 1e-10),
+            (SolverKind::Mdr, 1e-4),
+        ] {
             let opts = SolveOptions {
-                solver: SolverKind::Mdr,
+                solver,
                 rtol,
                 ..Default::default()
             };
-            c.bench_function(&format!("mdr {name} rtol={rtol:e}"), |b| {
-                b.iter(|| solve(&imp, &opts).unwrap())
-            });
+            g.bench_with_input(
+                BenchmarkId::new(format!("{solver} rtol={rtol:e}"), id),
+                &opts,
+                |b, o| b.iter(|| solve(&imp, o).unwrap()),
+            );
         }
     }
+    g.finish();
 }
 
-criterion_group!(benches, bench);
+fn foundation(c: &mut Criterion) {
+    let mut g = c.benchmark_group("mdr-foundation");
+    g.sample_size(20);
+    let imp = impact_case("dissipative-nu045").unwrap().impact().unwrap();
+    let mat = solver::canonical_material(&imp);
+    let layout = mdr::pilot(&mat.prony).unwrap();
+    for scheme in [mdr::Scheme::Exponential, mdr::Scheme::Euler] {
+        g.bench_function(
+            format!("{} 256 elements x 2048 steps", scheme.name()),
+            |b| b.iter(|| mdr::run_resolution(scheme, &mat, &layout, 256, 2048, false).unwrap()),
+        );
+    }
+    g.finish();
+}
+
+criterion_group!(benches, solvers, foundation);
 criterion_main!(benches);

@@ -280,6 +280,29 @@ pub fn summary(points: &[BenchPoint], machine: &str, batch: Option<(usize, f64)>
             }
         }
     }
+    // speed-up at equal accuracy: the cheapest setting of each solver whose worst CoR error over
+    // the cases is at most 1e-4
+    let cheapest = |solver: SolverKind| {
+        sweep(false)
+            .into_iter()
+            .filter(|(k, _)| *k == solver)
+            .flat_map(|(_, rtols)| rtols)
+            .filter_map(|rtol| aggregate(points, solver, rtol))
+            .filter(|&(_, e, _)| e <= 1e-4)
+            .map(|(t, _, _)| t)
+            .fold(f64::INFINITY, f64::min)
+    };
+    let (euler, fast) = (cheapest(SolverKind::MdrEuler), cheapest(SolverKind::Fast));
+    if euler.is_finite() && fast.is_finite() {
+        let _ = writeln!(
+            s,
+            "\nAt equal accuracy (worst CoR error over the cases at most 1e-4, cheapest setting of each): \
+             `mdr-euler` {} against `fast` {}, a ratio of {:.0}.",
+            fmt_time(euler),
+            fmt_time(fast),
+            euler / fast
+        );
+    }
     if let Some((rows, secs)) = batch {
         let _ = writeln!(
             s,
