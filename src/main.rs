@@ -49,7 +49,7 @@ enum Command {
         /// CSV with header nu,p2,p3: writes nu,p2,p3,cor,contact_time,max_indentation to stdout.
         #[arg(long)]
         input: Option<PathBuf>,
-        /// Solver: auto, mdr, mdr-euler, reference.
+        /// Solver: auto, fast, reference, mdr, mdr-euler.
         #[arg(long, default_value = "auto")]
         solver: String,
         /// Requested relative accuracy of the CoR.
@@ -142,7 +142,7 @@ enum Command {
         /// Seed of the random sample and of the dimensional inputs.
         #[arg(long, default_value_t = 1)]
         seed: u64,
-        /// Solver name (auto, mdr, mdr-euler, ...).
+        /// Solver: auto, fast, reference, mdr, mdr-euler.
         #[arg(long, default_value = "auto")]
         solver: String,
         /// Requested relative accuracy of each CoR.

@@ -17,7 +17,7 @@
 //! # k_0 = 5.0e7         # Pa, bulk modulus: give either poisson or k_0, not both
 //!
 //! [solver]              # optional
-//! name = "auto"         # auto | mdr | mdr-euler | reference
+//! name = "auto"         # auto | fast | reference | mdr | mdr-euler
 //! rtol = 1e-6           # requested relative accuracy of the CoR
 //! # elements = 200      # explicit MDR resolution (both or neither): elements per contact radius
 //! # steps = 2000        #   and time steps per contact time
