@@ -252,6 +252,27 @@ pub struct Prony {
 }
 
 impl Prony {
+    /// Check that the series is a valid relaxation function: `0 < relaxed < inf`, every
+    /// `0 < tau_k < inf` and `0 <= c_k < inf` (errors name the field).
+    pub fn validate(&self) -> Result<()> {
+        check(
+            "relaxed",
+            self.relaxed,
+            self.relaxed > 0.0,
+            "0 < G_eq(inf) < inf",
+        )?;
+        for p in &self.terms {
+            check("tau", p.tau, p.tau > 0.0, "0 < tau < inf")?;
+            check(
+                "coefficient",
+                p.coefficient,
+                p.coefficient >= 0.0,
+                "0 <= c_k < inf",
+            )?;
+        }
+        Ok(())
+    }
+
     /// `G(t)` (Pa) for `t >= 0`.
     pub fn eval(&self, t: f64) -> f64 {
         self.relaxed

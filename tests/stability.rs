@@ -118,15 +118,22 @@ proptest! {
         prop_assert!((o.dissipated_energy - 0.5 * (1.0 - o.cor * o.cor)).abs() <= 1e-14);
     }
 
-    /// Refining the MDR by 4x in elements and steps reduces the CoR error (against a much finer run).
+    /// Refining the MDR reduces the CoR error against the reference solver, in the asymptotic
+    /// range. Coarse levels are pre-asymptotic: there the error can be small by cancellation
+    /// and grow on refinement (random inputs found 16 x 32 -> 64 x 128 going from 8e-5 to 5e-4),
+    /// which is why the adaptive driver demands three consistent differences. Even past 128 x 256
+    /// a single 4x refinement can leave the error unchanged (found: 2.6e-6 -> 2.7e-6 -> 4.2e-7),
+    /// so the property is on the 16x refinement from the coarser two levels to 2048 x 4096:
+    /// the error must drop by at least 4.
     #[test]
     fn refinement_reduces_error(nu in -0.9f64..0.5, lp2 in -3.0f64..0.0, lp3 in -1.0f64..1.0) {
         let imp = Impact::from_groups(Groups::new(nu, 10f64.powf(lp2), 10f64.powf(lp3)).unwrap()).unwrap();
         let mat = solver::canonical_material(&imp);
         let layout = mdr::pilot(&mat.prony).unwrap();
         let run = |n, m| mdr::run_resolution(mdr::Scheme::Exponential, &mat, &layout, n, m, false).unwrap().cor;
-        let fine = run(1024, 2048);
-        let (coarse, mid) = (run(16, 32), run(64, 128));
-        prop_assert!((mid - fine).abs() < (coarse - fine).abs(), "{coarse} {mid} {fine}");
+        let exact = solve(&imp, &SolveOptions { solver: SolverKind::Reference, rtol: 1e-10, ..Default::default() }).unwrap().cor;
+        let err = |n, m| (run(n, m) - exact).abs();
+        let e: Vec<f64> = [(128, 256), (512, 1024), (2048, 4096)].iter().map(|&(n, m)| err(n, m)).collect();
+        prop_assert!(e[2] < 0.25 * e[0].max(e[1]), "errors {e:?}");
     }
 }

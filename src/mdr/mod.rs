@@ -128,6 +128,27 @@ pub struct Grid {
 }
 
 impl Grid {
+    /// Step size of the current phase.
+    fn dt(&self, compression: bool) -> f64 {
+        if compression {
+            self.dt_compression
+        } else {
+            self.dt_restitution
+        }
+    }
+
+    /// Error when the time loop has used its step budget without the contact ending.
+    fn check_budget(&self, steps: u64, what: &'static str) -> Result<()> {
+        if steps >= self.max_steps {
+            Err(Error::NoConvergence {
+                what,
+                iterations: steps,
+            })
+        } else {
+            Ok(())
+        }
+    }
+
     /// Grid with `elements` across the estimated contact radius and `steps` per estimated
     /// contact time, split between the phases in proportion to their number of steps
     /// (`steps / 2` each, so that a fast compression and a slow restitution are both resolved).
@@ -183,6 +204,15 @@ impl Tracker {
     }
 }
 
+/// A history buffer with the initial state (`d = 0`, `v = 1`), if requested.
+fn start_history(history: bool) -> Option<History> {
+    history.then(|| {
+        let mut h = History::default();
+        h.push(0.0, 0.0, 1.0, 0.0, 0.0);
+        h
+    })
+}
+
 /// Peak of the parabola through three points (the middle one the largest).
 fn parabola_peak(t0: f64, f0: f64, t1: f64, f1: f64, t2: f64, f2: f64) -> f64 {
     let d01 = (f1 - f0) / (t1 - t0);
@@ -206,26 +236,14 @@ pub fn run_exponential(
     let geom = Foundation::new(grid.dx, 1.0, capacity);
     let mut f = ExpFoundation::new(geom, prony);
     let (mut t, mut d, mut v, mut force) = (0.0_f64, 0.0_f64, 1.0_f64, 0.0_f64);
-    let mut hist = history.then(History::default);
-    if let Some(h) = hist.as_mut() {
-        h.push(0.0, 0.0, 1.0, 0.0, 0.0);
-    }
+    let mut hist = start_history(history);
     let mut tr = Tracker::default();
     let mut compression = true;
     let mut steps = 0u64;
     let t_end;
     loop {
-        if steps >= grid.max_steps {
-            return Err(Error::NoConvergence {
-                what: "mdr time loop (contact did not end)",
-                iterations: steps,
-            });
-        }
-        let dt = if compression {
-            grid.dt_compression
-        } else {
-            grid.dt_restitution
-        };
+        grid.check_budget(steps, "mdr time loop (contact did not end)")?;
+        let dt = grid.dt(compression);
         f.set_step(dt);
         let mut aff = f.affine(d);
         let q = 0.25 * dt; // trapezoidal: r = v - dt (F_n + F_{n+1}) / (4 m)
@@ -363,26 +381,14 @@ pub fn run_euler(
     let geom = Foundation::new(grid.dx, 1.0, capacity);
     let mut f = EulerFoundation::new(geom, material.network);
     let (mut t, mut d, mut v) = (0.0_f64, 0.0_f64, 1.0_f64);
-    let mut hist = history.then(History::default);
-    if let Some(h) = hist.as_mut() {
-        h.push(0.0, 0.0, 1.0, 0.0, 0.0);
-    }
+    let mut hist = start_history(history);
     let mut tr = Tracker::default();
     let mut compression = true;
     let mut steps = 0u64;
     let t_end;
     loop {
-        if steps >= grid.max_steps {
-            return Err(Error::NoConvergence {
-                what: "mdr-euler time loop (contact did not end)",
-                iterations: steps,
-            });
-        }
-        let dt = if compression {
-            grid.dt_compression
-        } else {
-            grid.dt_restitution
-        };
+        grid.check_budget(steps, "mdr-euler time loop (contact did not end)")?;
+        let dt = grid.dt(compression);
         let force = f.force_and_advance(d, dt);
         let v1 = v - dt * force;
         let d1 = d + dt * v1;

@@ -958,21 +958,7 @@ fn solve(prony: &Prony, rtol: f64, sampling: Sampling, samples: usize) -> Result
         (1e-13..=0.1).contains(&rtol),
         "1e-13 <= rtol <= 0.1",
     )?;
-    check(
-        "relaxed",
-        prony.relaxed,
-        prony.relaxed > 0.0,
-        "0 < G_eq(inf) < inf",
-    )?;
-    for p in &prony.terms {
-        check("tau", p.tau, p.tau > 0.0, "0 < tau < inf")?;
-        check(
-            "coefficient",
-            p.coefficient,
-            p.coefficient >= 0.0,
-            "0 <= c_k < inf",
-        )?;
-    }
+    prony.validate()?;
     let mut tol = (REF_LOCAL_FACTOR * rtol).max(MIN_LOCAL_TOL);
     let mut coarse = run(prony, tol, &Sampling::None)?;
     let sampling = if samples >= 2 {

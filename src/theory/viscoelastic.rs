@@ -84,21 +84,7 @@ pub struct IndentSample {
 
 fn check_inputs(prony: &Prony, radius: f64) -> Result<()> {
     check("radius", radius, radius > 0.0, "0 < radius < inf")?;
-    check(
-        "relaxed",
-        prony.relaxed,
-        prony.relaxed > 0.0,
-        "0 < G_eq(inf) < inf",
-    )?;
-    for p in &prony.terms {
-        check("tau", p.tau, p.tau > 0.0, "0 < tau < inf")?;
-        check(
-            "coefficient",
-            p.coefficient,
-            p.coefficient >= 0.0,
-            "0 <= c_k < inf",
-        )?;
-    }
+    prony.validate()?;
     Ok(())
 }
 
