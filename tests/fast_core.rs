@@ -139,7 +139,7 @@ fn work_is_pinned() {
     );
 }
 const PINNED_STEPS: u64 = 27;
-const PINNED_EVALUATIONS: u64 = 340;
+const PINNED_EVALUATIONS: u64 = 299;
 
 #[test]
 fn errors_are_reported() {

@@ -34,6 +34,11 @@ fn xcheck() {
             }
             times.push(best);
             let o = o.unwrap().unwrap();
+            if let Ok(f) = std::env::var("XDUMP") {
+                use std::io::Write;
+                let mut w = std::fs::OpenOptions::new().create(true).append(true).open(f).unwrap();
+                writeln!(w, "{rtol:e},{i},{:.17e}", o.cor).unwrap();
+            }
             steps += o.work.steps;
             evals += o.work.evaluations;
             let err = ((o.cor - r.cor) / r.cor).abs();

@@ -71,6 +71,8 @@ pub const FAST_MAX_TERMS: usize = 8;
 pub const FAST_MAX_STEPS: u64 = 20_000;
 /// Iteration cap of the Newton solve of one step.
 pub const FAST_NEWTON_MAX_ITER: usize = 40;
+/// Safety factor of the one-correction Newton stop (`quadratic_done`).
+pub const FAST_QUADRATIC_SAFETY: f64 = 10.0;
 /// Local error tolerance per step, as a fraction of the requested `rtol`.
 pub const FAST_LOCAL_TOL_FACTOR: f64 = 0.1;
 /// Iteration cap of the fit of the last step to the end of contact.
@@ -807,7 +809,9 @@ impl Solver {
             if !dmax.is_finite() {
                 break;
             }
-            if newton_done(dmax, scale, prev, self.rtol) {
+            if newton_done(dmax, scale, prev, self.rtol)
+                || quadratic_done(dmax, scale, dfix[S - 1] + z[S - 1], self.rtol)
+            {
                 converged = true;
                 break;
             }
@@ -1028,7 +1032,8 @@ impl Solver {
             if !dmax.is_finite() {
                 break;
             }
-            converged = newton_done(dmax, scale, prev, self.rtol);
+            converged = newton_done(dmax, scale, prev, self.rtol)
+                || quadratic_done(dmax, scale, dfix[0] + z[0], self.rtol);
             prev = dmax;
             if converged {
                 // the last correction is at the accuracy floor: move the forces to first order
@@ -1174,6 +1179,14 @@ fn update(z: &mut [f64; S], delta: &[f64; S]) -> (f64, f64) {
         scale = scale.max(z[i].abs());
     }
     (dmax, scale)
+}
+
+/// Newton stop after a small correction: with the relative curvature of `d^(3/2)` (`~ 1/d`)
+/// the next correction is about `dmax^2 / d`; stop when [`FAST_QUADRATIC_SAFETY`] times that
+/// is below the stop level of [`newton_done`] (saves the confirming iteration).
+fn quadratic_done(dmax: f64, scale: f64, d: f64, rtol: f64) -> bool {
+    let tol = (1e-4 * rtol).max(1e-14);
+    d > 0.0 && dmax * dmax * FAST_QUADRATIC_SAFETY <= tol * scale * d
 }
 
 /// Newton stop: a correction at rounding level of the increments, or stagnation near it.
