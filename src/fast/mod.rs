@@ -489,6 +489,8 @@ struct Solver {
     comp: Vec<Seg>,
     t_m: f64,
     evaluations: u64,
+    /// Compression segment of the last dense evaluation.
+    last_seg: usize,
 }
 
 /// One converged compression or restitution step.
@@ -562,7 +564,20 @@ impl Solver {
     /// Dense compression output at `t1 ∈ [0, t_m]`.
     fn comp_at(&mut self, t1: f64) -> Pt {
         self.evaluations += 1;
-        let i = self.comp.partition_point(|s| s.t0 <= t1).max(1) - 1;
+        // the roots move slowly: try the last segment and its neighbour first
+        let n = self.comp.len();
+        let inside = |i: usize| {
+            i < n && self.comp[i].t0 <= t1 && (i + 1 == n || self.comp[i + 1].t0 > t1)
+        };
+        let hint = self.last_seg;
+        let i = if inside(hint) {
+            hint
+        } else if hint > 0 && inside(hint - 1) {
+            hint - 1
+        } else {
+            self.comp.partition_point(|s| s.t0 <= t1).max(1) - 1
+        };
+        self.last_seg = i;
         let seg = &self.comp[i];
         let th = ((t1 - seg.t0) / seg.h).max(0.0);
         if self.dense.len() <= i * self.k || !self.dense_ok[i] {
@@ -1100,31 +1115,43 @@ impl Solver {
         (g, pt)
     }
 
-    /// Root of `g` in `(0, hi]` by bisection–secant (Illinois), `g(0) > 0 >= g(hi)`.
+    /// Root of `g` in `(0, hi]` by safeguarded Newton, `g(0) > 0 >= g(hi)`;
+    /// `dg/dθ = h [c_inf v + Σ_k c_k (v - S_k / tau_k)]` (`S_k' = d' - S_k / tau_k`).
     fn end_root(&self, seg: &Seg, hi: f64, g_hi: f64) -> Result<f64> {
-        let (mut a, mut ga) = (0.0, self.contact_measure(seg, 0.0).0);
-        let (mut b, mut gb) = (hi, g_hi);
-        let mut side = 0;
+        let g0 = self.contact_measure(seg, 0.0).0;
+        let (mut a, mut b) = (0.0, hi);
+        // first iterate: the secant through the bracket
+        let mut x = (hi * g0) / (g0 - g_hi);
+        if !(x > a && x < b) {
+            x = 0.5 * (a + b);
+        }
         for _ in 0..tolerances::ROOT_MAX_ITER {
-            let x = (a * gb - b * ga) / (gb - ga);
-            let x = if x > a && x < b { x } else { 0.5 * (a + b) };
-            let (gx, _) = self.contact_measure(seg, x);
+            let (gx, pt) = self.contact_measure(seg, x);
+            if gx == 0.0 {
+                return Ok(x);
+            }
             if gx > 0.0 {
                 a = x;
-                ga = gx;
-                if side == 1 {
-                    gb *= 0.5;
-                }
-                side = 1;
             } else {
                 b = x;
-                gb = gx;
-                if side == -1 {
-                    ga *= 0.5;
-                }
-                side = -1;
             }
-            if b - a <= 1e-15 * hi || gx == 0.0 {
+            let mut dg = self.c_inf * pt.v;
+            for k in 0..self.k {
+                dg += self.c[k] * (pt.v - pt.s[k] / self.tau[k]);
+            }
+            dg *= seg.h;
+            let newton = x - gx / dg;
+            let dx = (newton - x).abs();
+            if newton > a && newton < b {
+                // quadratic convergence: the Newton point is exact to ~dx^2
+                if dx <= 1e-10 * hi {
+                    return Ok(newton);
+                }
+                x = newton;
+            } else {
+                x = 0.5 * (a + b);
+            }
+            if b - a <= 1e-15 * hi {
                 return Ok(x);
             }
         }
@@ -1329,6 +1356,7 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
         dense_ok: Vec::new(),
         t_m: 0.0,
         evaluations: 0,
+        last_seg: 0,
     };
     run(&mut s, rtol, history)
 }
