@@ -139,7 +139,7 @@ fn work_is_pinned() {
     );
 }
 const PINNED_STEPS: u64 = 27;
-const PINNED_EVALUATIONS: u64 = 299;
+const PINNED_EVALUATIONS: u64 = 242;
 
 #[test]
 fn errors_are_reported() {

@@ -824,8 +824,14 @@ impl Solver {
             if !dmax.is_finite() {
                 break;
             }
+            // F'' = (3/4) (16/3) G d^(-1/2) at most: the next correction is h^2 A F'' dmax^2 / 2
+            let mut dmin = f64::INFINITY;
+            for i in 0..S {
+                dmin = dmin.min(dfix[i] + z[i]);
+            }
+            let curv = 0.5 * h2 * 0.75 * K16 * self.glassy / dmin.max(0.0).sqrt();
             if newton_done(dmax, scale, prev, self.rtol)
-                || quadratic_done(dmax, scale, dfix[S - 1] + z[S - 1], self.rtol)
+                || quadratic_done(dmax, scale, curv, self.rtol)
             {
                 converged = true;
                 break;
@@ -1047,8 +1053,15 @@ impl Solver {
             if !dmax.is_finite() {
                 break;
             }
+            // as in compression, at d(t_1), with dd(t_1)/dd <= G_glassy / c_inf
+            let mut d1min = f64::INFINITY;
+            for i in 0..S {
+                d1min = d1min.min(if t1[i] > 0.0 { d1[i] } else { 0.0 });
+            }
+            let g = self.glassy * self.glassy / self.c_inf;
+            let curv = 0.5 * h2 * 0.75 * K16 * g / d1min.max(0.0).sqrt();
             converged = newton_done(dmax, scale, prev, self.rtol)
-                || quadratic_done(dmax, scale, dfix[0] + z[0], self.rtol);
+                || quadratic_done(dmax, scale, curv, self.rtol);
             prev = dmax;
             if converged {
                 // the last correction is at the accuracy floor: move the forces to first order
@@ -1208,12 +1221,13 @@ fn update(z: &mut [f64; S], delta: &[f64; S]) -> (f64, f64) {
     (dmax, scale)
 }
 
-/// Newton stop after a small correction: with the relative curvature of `d^(3/2)` (`~ 1/d`)
-/// the next correction is about `dmax^2 / d`; stop when [`FAST_QUADRATIC_SAFETY`] times that
-/// is below the stop level of [`newton_done`] (saves the confirming iteration).
-fn quadratic_done(dmax: f64, scale: f64, d: f64, rtol: f64) -> bool {
+/// Newton stop after one small correction: the next one is at most about `curv dmax^2`
+/// (`curv` from a bound of the second derivative of the forces); stop when
+/// [`FAST_QUADRATIC_SAFETY`] times that is below the stop level of [`newton_done`]
+/// (saves the confirming iteration).
+fn quadratic_done(dmax: f64, scale: f64, curv: f64, rtol: f64) -> bool {
     let tol = (1e-4 * rtol).max(1e-14);
-    d > 0.0 && dmax * dmax * FAST_QUADRATIC_SAFETY <= tol * scale * d
+    curv.is_finite() && curv * dmax * dmax * FAST_QUADRATIC_SAFETY <= tol * scale
 }
 
 /// Newton stop: a correction at rounding level of the increments, or stagnation near it.
