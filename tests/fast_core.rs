@@ -138,8 +138,8 @@ fn work_is_pinned() {
         (PINNED_STEPS, PINNED_EVALUATIONS)
     );
 }
-const PINNED_STEPS: u64 = 27;
-const PINNED_EVALUATIONS: u64 = 242;
+const PINNED_STEPS: u64 = 24;
+const PINNED_EVALUATIONS: u64 = 214;
 
 #[test]
 fn errors_are_reported() {

@@ -1528,6 +1528,9 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
     let mut ending = false;
     let mut end_iter = 0usize;
     let mut last_miss = f64::INFINITY;
+    // after a last step too long for the accuracy: (estimated end of contact, length of the
+    // last step); the steps before it stop short of that last step instead of trying again
+    let mut end_plan: Option<(f64, f64)> = None;
     let (v_end, t_end);
     loop {
         steps += 1;
@@ -1611,8 +1614,12 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
                 last_miss = miss;
                 if done {
                     if !(ratio <= 1.0) {
-                        // the last step is too long for the accuracy: approach in smaller steps
-                        h *= step_factor(ratio).min(0.7);
+                        // the last step is too long for the accuracy: approach in smaller
+                        // steps, the last one short enough (its error grows like h^(5/2),
+                        // F ~ (t_end - t)^(3/2))
+                        let last = h * th * (0.5 * ratio.powf(-0.4)).clamp(0.05, 0.5);
+                        end_plan = Some((t + th * h, last));
+                        h = (th * h - last).min(h * step_factor(ratio).min(0.7));
                         ending = false;
                         last_miss = f64::INFINITY;
                         continue;
@@ -1663,6 +1670,17 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
             });
         }
         h *= step_factor(ratio);
+        if let Some((te, last)) = end_plan {
+            let rest = te - t;
+            if rest <= 0.5 * last {
+                end_plan = None; // the estimate was off: find the end anew
+            } else if rest <= 1.2 * last {
+                h = rest;
+                ending = true;
+            } else {
+                h = h.min(rest - last);
+            }
+        }
     }
     let cor = -v_end;
     if !cor.is_finite() {
