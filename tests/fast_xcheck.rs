@@ -1,4 +1,7 @@
-//! Throwaway: accuracy of `fast` against the external table at rtol 1e-6 / 1e-10 and median time.
+//! Accuracy of `fast` against the external table (`reference/external/cor_python.csv`, all 660
+//! rows) at rtol 1e-6 (bound 1e-6) and 1e-10 (bound 1e-9), median time per impact (best of
+//! `XREPS` runs, default 9), and consistency of histories. Env: `XRTOL` (one rtol only),
+//! `XDUMP` (append `rtol,row,cor` to a file).
 //! `cargo test --release --test fast_xcheck -- --ignored --nocapture`
 use mdr_impact::validate::external_rows;
 use mdr_impact::{fast, Groups, Impact};
@@ -10,7 +13,11 @@ fn xcheck() {
     let rows = external_rows().unwrap();
     let pr: Vec<_> = rows
         .iter()
-        .map(|r| Impact::from_groups(Groups::new(r.nu, r.p2, r.p3).unwrap()).unwrap().canonical_relaxation())
+        .map(|r| {
+            Impact::from_groups(Groups::new(r.nu, r.p2, r.p3).unwrap())
+                .unwrap()
+                .canonical_relaxation()
+        })
         .collect();
     let only: Option<f64> = std::env::var("XRTOL").ok().map(|v| v.parse().unwrap());
     for &(rtol, bound) in &[(1e-6, 1e-6), (1e-10, 1e-9)] {
@@ -36,16 +43,20 @@ fn xcheck() {
             let o = o.unwrap().unwrap();
             if let Ok(f) = std::env::var("XDUMP") {
                 use std::io::Write;
-                let mut w = std::fs::OpenOptions::new().create(true).append(true).open(f).unwrap();
+                let mut w = std::fs::OpenOptions::new()
+                    .create(true)
+                    .append(true)
+                    .open(f)
+                    .unwrap();
                 writeln!(w, "{rtol:e},{i},{:.17e}", o.cor).unwrap();
             }
             steps += o.work.steps;
             evals += o.work.evaluations;
             let err = ((o.cor - r.cor) / r.cor).abs();
-            if !(err <= bound) {
+            if err.is_nan() || err > bound {
                 bad += 1;
             }
-            if !(err <= maxerr) {
+            if err.is_nan() || err > maxerr {
                 maxerr = err;
                 worst = i;
             }
@@ -67,17 +78,5 @@ fn xcheck() {
         assert!(h.t.windows(2).all(|w| w[1] > w[0]));
         assert!((h.v[h.len() - 1] + o.cor).abs() < 1e-12);
         assert!((h.t[h.len() - 1] - o.contact_time).abs() < 1e-12);
-    }
-}
-
-#[test]
-#[ignore = "debug"]
-fn one() {
-    let rows = external_rows().unwrap();
-    for i in [0usize, 100, 300, 506] {
-        let r = &rows[i];
-        let p = Impact::from_groups(Groups::new(r.nu, r.p2, r.p3).unwrap()).unwrap().canonical_relaxation();
-        let o = fast::impact(&p, 1e-6, false).unwrap();
-        eprintln!("row {i}: steps {} err {:.2e} t_end {}", o.work.steps, (o.cor - r.cor) / r.cor, o.contact_time);
     }
 }

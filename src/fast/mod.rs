@@ -33,17 +33,24 @@
 //! also solves for `t_1` on the dense, exact-in-the-kernel output of the compression phase.
 //! Step sizes are chosen from the defect of the collocation polynomial at a point between the
 //! nodes (error per step); the end of compression (`v = 0`) is found on the dense output, the
-//! last restitution step is fitted to end where `t_1 = 0`.
+//! last restitution step is fitted to end where `t_1 = 0` (accepted once the miss costs less
+//! than the tolerance: `F ~ (t_end - t)^(3/2)` there). Its error grows like `h^(5/2)`, not
+//! `h^(S+1)`: when it is too long, the approach is planned (the steps before it stop short of
+//! a last step of that length) instead of being found by trial. Newton stops after one
+//! correction when a bound of the next one (from the second derivative of `d^(3/2)`) is below
+//! its stop level.
 //!
 //! # Accuracy and cost (measured 2026-11-22, release build, one core, shared machine)
 //! Against an independent Python reference table (660 groups, `nu ∈ [-0.9, 0.5]`,
 //! `p2 ∈ [1e-4, 1e2]`, `p3 ∈ [1e-3, 1e4]`, reference error ~1e-13): max relative CoR error
-//! 4.2e-7 at `rtol = 1e-6` and 5.5e-11 at `rtol = 1e-10`, about 35 and 115 steps on average.
+//! 4.2e-7 at `rtol = 1e-6` and 5.5e-11 at `rtol = 1e-10`, about 27 and 111 steps on average
+//! (`tests/fast_xcheck.rs`, ignored).
 //! Against the brute-force integration in `tests/fast_independent.rs`: 5e-11 at `rtol = 1e-8`.
-//! Cost over the paper's range (`tests/fast_core.rs`, ignored timing test): median ~80–95 µs per
-//! impact at `rtol = 1e-6` and ~220 µs at `1e-10` (max a few hundred µs; timings on a loaded
-//! machine are noisy). Most of it is the Ting roots of the restitution phase (~20 dense
-//! evaluations of the compression history per step). The step-size control (defect at one
+//! Cost over the paper's range (`tests/fast_core.rs`, ignored timing test): median ~45–60 µs per
+//! impact at `rtol = 1e-6` and ~150–180 µs at `1e-10` (max a few hundred µs; timings on a
+//! loaded machine are noisy). The largest share (~30%) is the Ting roots of the restitution
+//! phase (5 dense evaluations of the compression history per Newton iteration, one more for
+//! the error probe), then the exact kernels (`exp`, `Ĵ`). The step-size control (defect at one
 //! probe point, error per step `<= 0.1 rtol`) is conservative by ~5–10x for most impacts, but
 //! not for the most dissipative ones (`e ~ 0.01`), where the error relative to `e` is largest.
 //!
@@ -566,9 +573,8 @@ impl Solver {
         self.evaluations += 1;
         // the roots move slowly: try the last segment and its neighbour first
         let n = self.comp.len();
-        let inside = |i: usize| {
-            i < n && self.comp[i].t0 <= t1 && (i + 1 == n || self.comp[i + 1].t0 > t1)
-        };
+        let inside =
+            |i: usize| i < n && self.comp[i].t0 <= t1 && (i + 1 == n || self.comp[i + 1].t0 > t1);
         let hint = self.last_seg;
         let i = if inside(hint) {
             hint
