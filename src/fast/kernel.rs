@@ -70,12 +70,36 @@ pub(crate) fn jhat(nu: f64, x: f64) -> f64 {
 
 /// `Ĵ_m(x)` for the integers `m = 1..=N-1` into `out[m]` (`out[0]` is unused).
 ///
-/// See [`jhat_family`] (`ν0 = 1`).
+/// For `x >= 2` as [`jhat_family`] (`ν0 = 1`); for `x < 2` one series for the highest order, `Ĵ_ν(x) = e^(-x) Σ_j x^j / (j! (ν + j))`,
+/// then the backward recurrence `Ĵ_ν = (1 - x Ĵ_(ν+1)) / ν` (stable: errors shrink by `x/ν`).
 pub(crate) fn jhat_int<const N: usize>(x: f64, out: &mut [f64; N]) {
-    let mut tmp = [0.0; N];
-    jhat_family(1.0, x, &mut tmp);
+    if x >= FORWARD_X || N < 3 {
+        let mut tmp = [0.0; N];
+        jhat_family(1.0, x, &mut tmp);
+        out[0] = 0.0;
+        out[1..N].copy_from_slice(&tmp[..N - 1]);
+        return;
+    }
+    let top = N - 1;
+    let mut t = 1.0; // x^j / j!
+    let mut sum = RECIP[top];
+    let mut j = 0;
+    loop {
+        j += 1;
+        t *= x * RECIP[j];
+        let term = t * RECIP[top + j];
+        sum += term;
+        if term <= 1e-17 * sum || j > 60 {
+            break;
+        }
+    }
+    let mut v = (-x).exp() * sum;
+    out[top] = v;
+    for m in (1..top).rev() {
+        v = (1.0 - x * v) * RECIP[m];
+        out[m] = v;
+    }
     out[0] = 0.0;
-    out[1..N].copy_from_slice(&tmp[..N - 1]);
 }
 
 /// `Ĵ_(ν0 + m)(x)` for `m = 0..N` into `out[m]` (`ν0` a positive multiple of 1/2, `N` small):

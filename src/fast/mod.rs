@@ -33,17 +33,24 @@
 //! also solves for `t_1` on the dense, exact-in-the-kernel output of the compression phase.
 //! Step sizes are chosen from the defect of the collocation polynomial at a point between the
 //! nodes (error per step); the end of compression (`v = 0`) is found on the dense output, the
-//! last restitution step is fitted to end where `t_1 = 0`.
+//! last restitution step is fitted to end where `t_1 = 0` (accepted once the miss costs less
+//! than the tolerance: `F ~ (t_end - t)^(3/2)` there). Its error grows like `h^(5/2)`, not
+//! `h^(S+1)`: when it is too long, the approach is planned (the steps before it stop short of
+//! a last step of that length) instead of being found by trial. Newton stops after one
+//! correction when a bound of the next one (from the second derivative of `d^(3/2)`) is below
+//! its stop level.
 //!
 //! # Accuracy and cost (measured 2026-11-22, release build, one core, shared machine)
 //! Against an independent Python reference table (660 groups, `nu ∈ [-0.9, 0.5]`,
 //! `p2 ∈ [1e-4, 1e2]`, `p3 ∈ [1e-3, 1e4]`, reference error ~1e-13): max relative CoR error
-//! 4.2e-7 at `rtol = 1e-6` and 5.5e-11 at `rtol = 1e-10`, about 35 and 115 steps on average.
+//! 4.2e-7 at `rtol = 1e-6` and 5.5e-11 at `rtol = 1e-10`, about 27 and 111 steps on average
+//! (`tests/fast_xcheck.rs`, ignored).
 //! Against the brute-force integration in `tests/fast_independent.rs`: 5e-11 at `rtol = 1e-8`.
-//! Cost over the paper's range (`tests/fast_core.rs`, ignored timing test): median ~80–95 µs per
-//! impact at `rtol = 1e-6` and ~220 µs at `1e-10` (max a few hundred µs; timings on a loaded
-//! machine are noisy). Most of it is the Ting roots of the restitution phase (~20 dense
-//! evaluations of the compression history per step). The step-size control (defect at one
+//! Cost over the paper's range (`tests/fast_core.rs`, ignored timing test): median ~45–60 µs per
+//! impact at `rtol = 1e-6` and ~150–180 µs at `1e-10` (max a few hundred µs; timings on a
+//! loaded machine are noisy). The largest share (~30%) is the Ting roots of the restitution
+//! phase (5 dense evaluations of the compression history per Newton iteration, one more for
+//! the error probe), then the exact kernels (`exp`, `Ĵ`). The step-size control (defect at one
 //! probe point, error per step `<= 0.1 rtol`) is conservative by ~5–10x for most impacts, but
 //! not for the most dissipative ones (`e ~ 0.01`), where the error relative to `e` is largest.
 //!
@@ -71,6 +78,8 @@ pub const FAST_MAX_TERMS: usize = 8;
 pub const FAST_MAX_STEPS: u64 = 20_000;
 /// Iteration cap of the Newton solve of one step.
 pub const FAST_NEWTON_MAX_ITER: usize = 40;
+/// Safety factor of the one-correction Newton stop (`quadratic_done`).
+pub const FAST_QUADRATIC_SAFETY: f64 = 10.0;
 /// Local error tolerance per step, as a fraction of the requested `rtol`.
 pub const FAST_LOCAL_TOL_FACTOR: f64 = 0.1;
 /// Iteration cap of the fit of the last step to the end of contact.
@@ -487,6 +496,8 @@ struct Solver {
     comp: Vec<Seg>,
     t_m: f64,
     evaluations: u64,
+    /// Compression segment of the last dense evaluation.
+    last_seg: usize,
 }
 
 /// One converged compression or restitution step.
@@ -560,7 +571,19 @@ impl Solver {
     /// Dense compression output at `t1 ∈ [0, t_m]`.
     fn comp_at(&mut self, t1: f64) -> Pt {
         self.evaluations += 1;
-        let i = self.comp.partition_point(|s| s.t0 <= t1).max(1) - 1;
+        // the roots move slowly: try the last segment and its neighbour first
+        let n = self.comp.len();
+        let inside =
+            |i: usize| i < n && self.comp[i].t0 <= t1 && (i + 1 == n || self.comp[i + 1].t0 > t1);
+        let hint = self.last_seg;
+        let i = if inside(hint) {
+            hint
+        } else if hint > 0 && inside(hint - 1) {
+            hint - 1
+        } else {
+            self.comp.partition_point(|s| s.t0 <= t1).max(1) - 1
+        };
+        self.last_seg = i;
         let seg = &self.comp[i];
         let th = ((t1 - seg.t0) / seg.h).max(0.0);
         if self.dense.len() <= i * self.k || !self.dense_ok[i] {
@@ -807,7 +830,15 @@ impl Solver {
             if !dmax.is_finite() {
                 break;
             }
-            if newton_done(dmax, scale, prev, self.rtol) {
+            // F'' = (3/4) (16/3) G d^(-1/2) at most: the next correction is h^2 A F'' dmax^2 / 2
+            let mut dmin = f64::INFINITY;
+            for i in 0..S {
+                dmin = dmin.min(dfix[i] + z[i]);
+            }
+            let curv = 0.5 * h2 * 0.75 * K16 * self.glassy / dmin.max(0.0).sqrt();
+            if newton_done(dmax, scale, prev, self.rtol)
+                || quadratic_done(dmax, scale, curv, self.rtol)
+            {
                 converged = true;
                 break;
             }
@@ -1028,7 +1059,15 @@ impl Solver {
             if !dmax.is_finite() {
                 break;
             }
-            converged = newton_done(dmax, scale, prev, self.rtol);
+            // as in compression, at d(t_1), with dd(t_1)/dd <= G_glassy / c_inf
+            let mut d1min = f64::INFINITY;
+            for i in 0..S {
+                d1min = d1min.min(if t1[i] > 0.0 { d1[i] } else { 0.0 });
+            }
+            let g = self.glassy * self.glassy / self.c_inf;
+            let curv = 0.5 * h2 * 0.75 * K16 * g / d1min.max(0.0).sqrt();
+            converged = newton_done(dmax, scale, prev, self.rtol)
+                || quadratic_done(dmax, scale, curv, self.rtol);
             prev = dmax;
             if converged {
                 // the last correction is at the accuracy floor: move the forces to first order
@@ -1095,31 +1134,43 @@ impl Solver {
         (g, pt)
     }
 
-    /// Root of `g` in `(0, hi]` by bisection–secant (Illinois), `g(0) > 0 >= g(hi)`.
+    /// Root of `g` in `(0, hi]` by safeguarded Newton, `g(0) > 0 >= g(hi)`;
+    /// `dg/dθ = h [c_inf v + Σ_k c_k (v - S_k / tau_k)]` (`S_k' = d' - S_k / tau_k`).
     fn end_root(&self, seg: &Seg, hi: f64, g_hi: f64) -> Result<f64> {
-        let (mut a, mut ga) = (0.0, self.contact_measure(seg, 0.0).0);
-        let (mut b, mut gb) = (hi, g_hi);
-        let mut side = 0;
+        let g0 = self.contact_measure(seg, 0.0).0;
+        let (mut a, mut b) = (0.0, hi);
+        // first iterate: the secant through the bracket
+        let mut x = (hi * g0) / (g0 - g_hi);
+        if !(x > a && x < b) {
+            x = 0.5 * (a + b);
+        }
         for _ in 0..tolerances::ROOT_MAX_ITER {
-            let x = (a * gb - b * ga) / (gb - ga);
-            let x = if x > a && x < b { x } else { 0.5 * (a + b) };
-            let (gx, _) = self.contact_measure(seg, x);
+            let (gx, pt) = self.contact_measure(seg, x);
+            if gx == 0.0 {
+                return Ok(x);
+            }
             if gx > 0.0 {
                 a = x;
-                ga = gx;
-                if side == 1 {
-                    gb *= 0.5;
-                }
-                side = 1;
             } else {
                 b = x;
-                gb = gx;
-                if side == -1 {
-                    ga *= 0.5;
-                }
-                side = -1;
             }
-            if b - a <= 1e-15 * hi || gx == 0.0 {
+            let mut dg = self.c_inf * pt.v;
+            for k in 0..self.k {
+                dg += self.c[k] * (pt.v - pt.s[k] / self.tau[k]);
+            }
+            dg *= seg.h;
+            let newton = x - gx / dg;
+            let dx = (newton - x).abs();
+            if newton > a && newton < b {
+                // quadratic convergence: the Newton point is exact to ~dx^2
+                if dx <= 1e-10 * hi {
+                    return Ok(newton);
+                }
+                x = newton;
+            } else {
+                x = 0.5 * (a + b);
+            }
+            if b - a <= 1e-15 * hi {
                 return Ok(x);
             }
         }
@@ -1174,6 +1225,15 @@ fn update(z: &mut [f64; S], delta: &[f64; S]) -> (f64, f64) {
         scale = scale.max(z[i].abs());
     }
     (dmax, scale)
+}
+
+/// Newton stop after one small correction: the next one is at most about `curv dmax^2`
+/// (`curv` from a bound of the second derivative of the forces); stop when
+/// [`FAST_QUADRATIC_SAFETY`] times that is below the stop level of [`newton_done`]
+/// (saves the confirming iteration).
+fn quadratic_done(dmax: f64, scale: f64, curv: f64, rtol: f64) -> bool {
+    let tol = (1e-4 * rtol).max(1e-14);
+    curv.is_finite() && curv * dmax * dmax * FAST_QUADRATIC_SAFETY <= tol * scale
 }
 
 /// Newton stop: a correction at rounding level of the increments, or stagnation near it.
@@ -1316,6 +1376,7 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
         dense_ok: Vec::new(),
         t_m: 0.0,
         evaluations: 0,
+        last_seg: 0,
     };
     run(&mut s, rtol, history)
 }
@@ -1473,6 +1534,9 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
     let mut ending = false;
     let mut end_iter = 0usize;
     let mut last_miss = f64::INFINITY;
+    // after a last step too long for the accuracy: (estimated end of contact, length of the
+    // last step); the steps before it stop short of that last step instead of trying again
+    let mut end_plan: Option<(f64, f64)> = None;
     let (v_end, t_end);
     loop {
         steps += 1;
@@ -1546,12 +1610,22 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
                 let miss = (th - 1.0).abs();
                 // converged, or stalled at rounding level (the end is located to far better
                 // than the step's accuracy needs: F vanishes there like (t_end - t)^(3/2))
-                let done = miss <= 1e-9 || (miss <= 1e-6 && miss >= 0.5 * last_miss);
+                // F ~ K (t_end - t)^(3/2) near the end (K from the force at the step start,
+                // a distance th h before the end): a step end off by miss h changes v by about
+                // K (miss h)^(5/2) / (5/2); the CoR is |v| there, hence the relative bound
+                let kink = f_n * (miss / th.max(1e-3)).powf(1.5) * miss * h * 0.4;
+                let done = miss <= 1e-9
+                    || (miss <= 1e-6 && miss >= 0.5 * last_miss)
+                    || (miss <= 0.1 && kink <= 0.01 * tol * v.abs());
                 last_miss = miss;
                 if done {
                     if !(ratio <= 1.0) {
-                        // the last step is too long for the accuracy: approach in smaller steps
-                        h *= step_factor(ratio).min(0.7);
+                        // the last step is too long for the accuracy: approach in smaller
+                        // steps, the last one short enough (its error grows like h^(5/2),
+                        // F ~ (t_end - t)^(3/2))
+                        let last = h * th * (0.5 * ratio.powf(-0.4)).clamp(0.05, 0.5);
+                        end_plan = Some((t + th * h, last));
+                        h = (th * h - last).min(h * step_factor(ratio).min(0.7));
                         ending = false;
                         last_miss = f64::INFINITY;
                         continue;
@@ -1602,6 +1676,17 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
             });
         }
         h *= step_factor(ratio);
+        if let Some((te, last)) = end_plan {
+            let rest = te - t;
+            if rest <= 0.5 * last {
+                end_plan = None; // the estimate was off: find the end anew
+            } else if rest <= 1.2 * last {
+                h = rest;
+                ending = true;
+            } else {
+                h = h.min(rest - last);
+            }
+        }
     }
     let cor = -v_end;
     if !cor.is_finite() {

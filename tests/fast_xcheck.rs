@@ -1,0 +1,82 @@
+//! Accuracy of `fast` against the external table (`reference/external/cor_python.csv`, all 660
+//! rows) at rtol 1e-6 (bound 1e-6) and 1e-10 (bound 1e-9), median time per impact (best of
+//! `XREPS` runs, default 9), and consistency of histories. Env: `XRTOL` (one rtol only),
+//! `XDUMP` (append `rtol,row,cor` to a file).
+//! `cargo test --release --test fast_xcheck -- --ignored --nocapture`
+use mdr_impact::validate::external_rows;
+use mdr_impact::{fast, Groups, Impact};
+use std::time::Instant;
+
+#[test]
+#[ignore = "throwaway accuracy + timing"]
+fn xcheck() {
+    let rows = external_rows().unwrap();
+    let pr: Vec<_> = rows
+        .iter()
+        .map(|r| {
+            Impact::from_groups(Groups::new(r.nu, r.p2, r.p3).unwrap())
+                .unwrap()
+                .canonical_relaxation()
+        })
+        .collect();
+    let only: Option<f64> = std::env::var("XRTOL").ok().map(|v| v.parse().unwrap());
+    for &(rtol, bound) in &[(1e-6, 1e-6), (1e-10, 1e-9)] {
+        if only.is_some_and(|o| o != rtol) {
+            continue;
+        }
+        let mut times = Vec::new();
+        let mut maxerr: f64 = 0.0;
+        let mut worst = 0;
+        let mut bad = 0;
+        let mut steps = 0u64;
+        let mut evals = 0u64;
+        for (i, (r, p)) in rows.iter().zip(&pr).enumerate() {
+            let mut best = f64::INFINITY;
+            let mut o = None;
+            for _ in 0..std::env::var("XREPS").map_or(9, |v| v.parse().unwrap()) {
+                let t0 = Instant::now();
+                let out = fast::impact(p, rtol, false);
+                best = best.min(t0.elapsed().as_secs_f64() * 1e6);
+                o = Some(out);
+            }
+            times.push(best);
+            let o = o.unwrap().unwrap();
+            if let Ok(f) = std::env::var("XDUMP") {
+                use std::io::Write;
+                let mut w = std::fs::OpenOptions::new()
+                    .create(true)
+                    .append(true)
+                    .open(f)
+                    .unwrap();
+                writeln!(w, "{rtol:e},{i},{:.17e}", o.cor).unwrap();
+            }
+            steps += o.work.steps;
+            evals += o.work.evaluations;
+            let err = ((o.cor - r.cor) / r.cor).abs();
+            if err.is_nan() || err > bound {
+                bad += 1;
+            }
+            if err.is_nan() || err > maxerr {
+                maxerr = err;
+                worst = i;
+            }
+        }
+        times.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        let n = times.len();
+        println!(
+            "rtol {rtol:e}: median {:.1} us, p90 {:.1}, max {:.1}; max err {maxerr:.2e} (row {worst}: nu={} p2={} p3={} cor={}), bad {bad}, mean steps {:.1}, evals {:.0}",
+            times[n / 2], times[n * 9 / 10], times[n - 1], rows[worst].nu, rows[worst].p2, rows[worst].p3, rows[worst].cor,
+            steps as f64 / n as f64, evals as f64 / n as f64
+        );
+        assert_eq!(bad, 0);
+    }
+    // histories
+    for p in pr.iter().step_by(37) {
+        let o = fast::impact(p, 1e-8, true).unwrap();
+        let h = o.history.unwrap();
+        assert!(h.len() > 3);
+        assert!(h.t.windows(2).all(|w| w[1] > w[0]));
+        assert!((h.v[h.len() - 1] + o.cor).abs() < 1e-12);
+        assert!((h.t[h.len() - 1] - o.contact_time).abs() < 1e-12);
+    }
+}
