@@ -35,38 +35,33 @@ pub enum Prescribed {
     },
 }
 
-impl Prescribed {
-    /// Validated triangle history.
-    pub fn triangle(rate: f64, peak_time: f64) -> Result<Self> {
-        let rate = check("rate", rate, rate > 0.0, "0 < rate < inf (m/s)")?;
-        let peak_time = check(
+/// Validate the rate (m/s) and the peak time (s) shared by every history.
+fn check_rate_and_peak(rate: f64, peak_time: f64) -> Result<(f64, f64)> {
+    Ok((
+        check("rate", rate, rate > 0.0, "0 < rate < inf (m/s)")?,
+        check(
             "peak_time",
             peak_time,
             peak_time > 0.0,
             "0 < peak_time < inf (s)",
-        )?;
+        )?,
+    ))
+}
+
+impl Prescribed {
+    /// Validated triangle history.
+    pub fn triangle(rate: f64, peak_time: f64) -> Result<Self> {
+        let (rate, peak_time) = check_rate_and_peak(rate, peak_time)?;
         Ok(Prescribed::Triangle { rate, peak_time })
     }
     /// Validated half-sine history.
     pub fn half_sine(rate: f64, peak_time: f64) -> Result<Self> {
-        let rate = check("rate", rate, rate > 0.0, "0 < rate < inf (m/s)")?;
-        let peak_time = check(
-            "peak_time",
-            peak_time,
-            peak_time > 0.0,
-            "0 < peak_time < inf (s)",
-        )?;
+        let (rate, peak_time) = check_rate_and_peak(rate, peak_time)?;
         Ok(Prescribed::HalfSine { rate, peak_time })
     }
     /// Validated Hertz impact trajectory with impact velocity `rate` and peak time `peak_time`.
     pub fn hertz_impact(rate: f64, peak_time: f64) -> Result<Self> {
-        let rate = check("rate", rate, rate > 0.0, "0 < rate < inf (m/s)")?;
-        let peak_time = check(
-            "peak_time",
-            peak_time,
-            peak_time > 0.0,
-            "0 < peak_time < inf (s)",
-        )?;
+        let (rate, peak_time) = check_rate_and_peak(rate, peak_time)?;
         hertz_trajectory(rate, peak_time)?;
         Ok(Prescribed::HertzImpact { rate, peak_time })
     }

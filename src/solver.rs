@@ -230,6 +230,8 @@ fn check_outcome(o: &Outcome) -> Result<()> {
         ("cor", o.cor),
         ("contact_time", o.contact_time),
         ("max_indentation", o.max_indentation),
+        ("time_of_max_indentation", o.time_of_max_indentation),
+        ("max_contact_radius", o.max_contact_radius),
         ("max_force", o.max_force),
         ("dissipated_energy", o.dissipated_energy),
     ] {

@@ -815,17 +815,13 @@ impl Solver {
                     jf[i][j] = K16 * (m[i][j] + if i == j { self.c_inf } else { 0.0 }) * dw;
                 }
             }
-            let mut jac = linalg::mul(&b.a, &jf);
-            for (i, row) in jac.iter_mut().enumerate() {
-                for x in row.iter_mut() {
-                    *x *= h2;
-                }
-                row[i] += 1.0;
-            }
-            let delta = linalg::solve(jac, r).ok_or(Error::NoConvergence {
-                what: "fast compression step (singular Newton matrix)",
-                iterations: 0,
-            })?;
+            let delta = newton_correction(
+                &b.a,
+                &jf,
+                h2,
+                r,
+                "fast compression step (singular Newton matrix)",
+            )?;
             let (dmax, scale) = update(&mut z, &delta);
             if !dmax.is_finite() {
                 break;
@@ -1044,17 +1040,13 @@ impl Solver {
                     }
                 }
             }
-            let mut jac = linalg::mul(&b.a, &jf);
-            for (i, row) in jac.iter_mut().enumerate() {
-                for x in row.iter_mut() {
-                    *x *= h2;
-                }
-                row[i] += 1.0;
-            }
-            let delta = linalg::solve(jac, r).ok_or(Error::NoConvergence {
-                what: "fast restitution step (singular Newton matrix)",
-                iterations: 0,
-            })?;
+            let delta = newton_correction(
+                &b.a,
+                &jf,
+                h2,
+                r,
+                "fast restitution step (singular Newton matrix)",
+            )?;
             let (dmax, scale) = update(&mut z, &delta);
             if !dmax.is_finite() {
                 break;
@@ -1216,6 +1208,28 @@ fn pow15_increment(d: f64, delta: f64) -> f64 {
 }
 
 /// Add a Newton correction; returns `(max |delta|, max |z|)`.
+/// Newton correction of a collocation step: solve `(I + h^2 A J) delta = r`, with `A` the
+/// collocation matrix and `J` the force Jacobian at the nodes.
+fn newton_correction(
+    a: &[[f64; S]; S],
+    jf: &[[f64; S]; S],
+    h2: f64,
+    r: [f64; S],
+    what: &'static str,
+) -> Result<[f64; S]> {
+    let mut jac = linalg::mul(a, jf);
+    for (i, row) in jac.iter_mut().enumerate() {
+        for x in row.iter_mut() {
+            *x *= h2;
+        }
+        row[i] += 1.0;
+    }
+    linalg::solve(jac, r).ok_or(Error::NoConvergence {
+        what,
+        iterations: 0,
+    })
+}
+
 fn update(z: &mut [f64; S], delta: &[f64; S]) -> (f64, f64) {
     let mut dmax: f64 = 0.0;
     let mut scale: f64 = 0.0;

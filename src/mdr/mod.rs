@@ -315,13 +315,7 @@ pub fn run_exponential(
         t_end,
         &tr,
         hist,
-        Work {
-            steps,
-            elements: f.max_elements as u64,
-            element_updates: f.element_updates,
-            evaluations: 0,
-            levels: 1,
-        },
+        (steps, f.max_elements, f.element_updates),
     ))
 }
 
@@ -443,13 +437,7 @@ pub fn run_euler(
         t_end,
         &tr,
         hist,
-        Work {
-            steps,
-            elements: f.max_elements as u64,
-            element_updates: f.element_updates,
-            evaluations: 0,
-            levels: 1,
-        },
+        (steps, f.max_elements, f.element_updates),
     ))
 }
 
@@ -459,7 +447,7 @@ fn finish(
     t_end: f64,
     tr: &Tracker,
     history: Option<History>,
-    work: Work,
+    (steps, elements, element_updates): (u64, usize, u64),
 ) -> Outcome {
     let cor = -v_end;
     Outcome {
@@ -473,7 +461,13 @@ fn finish(
         dissipated_energy: 0.5 * (1.0 - cor * cor),
         cor_error_estimate: None,
         history,
-        work,
+        work: Work {
+            steps,
+            elements: elements as u64,
+            element_updates,
+            evaluations: 0,
+            levels: 1,
+        },
         solver,
     }
 }

@@ -825,26 +825,15 @@ fn run(prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
                 }
             }
         }
+        // samples inside the two half steps (compression samples read the step's own record;
+        // restitution samples need the compression records, complete by then)
+        for rec in [&first.rec, &second.rec] {
+            emit(&sv, &mut samples, rec, phase, out_times, &mut next_out)?;
+        }
         match phase {
             Phase::Compression => {
                 sv.records.push(first.rec.clone());
                 sv.records.push(second.rec.clone());
-                emit(
-                    &sv,
-                    &mut samples,
-                    &first.rec,
-                    phase,
-                    out_times,
-                    &mut next_out,
-                )?;
-                emit(
-                    &sv,
-                    &mut samples,
-                    &second.rec,
-                    phase,
-                    out_times,
-                    &mut next_out,
-                )?;
                 push(&mut hist, &first.end, phase, &mut sv);
                 second.end.v = 0.0;
                 push(&mut hist, &second.end, phase, &mut sv);
@@ -855,22 +844,6 @@ fn run(prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
                 h = hl.max(H0);
             }
             Phase::Restitution => {
-                emit(
-                    &sv,
-                    &mut samples,
-                    &first.rec,
-                    phase,
-                    out_times,
-                    &mut next_out,
-                )?;
-                emit(
-                    &sv,
-                    &mut samples,
-                    &second.rec,
-                    phase,
-                    out_times,
-                    &mut next_out,
-                )?;
                 // free flight after separation: d = d_end + v_end (t - t_end), no force
                 if let Some(hh) = samples.as_mut() {
                     for &t in &out_times[next_out..] {
