@@ -1,7 +1,7 @@
 //! Accuracy of `fast` against the external table (`reference/external/cor_python.csv`, all 660
 //! rows) at rtol 1e-6 (bound 1e-6) and 1e-10 (bound 1e-9), median time per impact (best of
 //! `XREPS` runs, default 9), and consistency of histories. Env: `XRTOL` (one rtol only),
-//! `XDUMP` (append `rtol,row,cor` to a file).
+//! `XDUMP` (append `rtol,row,cor,cor_ref,steps,time_us,nu,p2,p3` to a file).
 //! `cargo test --release --test fast_xcheck -- --ignored --nocapture`
 use mdr_impact::validate::external_rows;
 use mdr_impact::{fast, Groups, Impact};
@@ -48,7 +48,12 @@ fn xcheck() {
                     .append(true)
                     .open(f)
                     .unwrap();
-                writeln!(w, "{rtol:e},{i},{:.17e}", o.cor).unwrap();
+                writeln!(
+                    w,
+                    "{rtol:e},{i},{:.17e},{},{},{},{},{},{}",
+                    o.cor, r.cor, o.work.steps, best, r.nu, r.p2, r.p3
+                )
+                .unwrap();
             }
             steps += o.work.steps;
             evals += o.work.evaluations;

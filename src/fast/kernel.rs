@@ -38,6 +38,17 @@ const FORWARD_X: f64 = 2.0;
 /// asymptotic series has error below `e^(-x)`.
 const ASYMPTOTIC_X: f64 = 40.0;
 
+/// `exp(-x)`, flushed to 0 beyond `x = 708` (where `exp(-x)` is below the smallest normal
+/// number): multiplies bounded states only, and libm's underflow path is slow.
+#[inline]
+pub(crate) fn exp_neg(x: f64) -> f64 {
+    if x > 708.0 {
+        0.0
+    } else {
+        (-x).exp()
+    }
+}
+
 /// `Ĵ_ν(x)` for any `ν > 0`, `x >= 0` (series or asymptotic expansion).
 pub(crate) fn jhat(nu: f64, x: f64) -> f64 {
     if x < ASYMPTOTIC_X {

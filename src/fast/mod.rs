@@ -82,6 +82,10 @@ pub const FAST_NEWTON_MAX_ITER: usize = 40;
 pub const FAST_QUADRATIC_SAFETY: f64 = 10.0;
 /// Local error tolerance per step, as a fraction of the requested `rtol`.
 pub const FAST_LOCAL_TOL_FACTOR: f64 = 0.1;
+/// The end-of-contact step control takes over within this many step lengths of the end.
+pub const FAST_END_NEAR: f64 = 6.0;
+/// `κ` of the end-of-contact error model (see `end_approach`), fitted on the external table.
+pub const FAST_END_KAPPA: f64 = 0.3;
 /// Iteration cap of the fit of the last step to the end of contact.
 pub const FAST_END_MAX_ITER: usize = 60;
 /// Hertz contact time in units of the maximum indentation over `v0`:
@@ -285,11 +289,21 @@ fn tables() -> &'static Tables {
 
 /// `Ĵ` at the exponents of a step: `one` (`ν = 1`, the `v_n h θ` term), `wfix` (`ν = 3/2`,
 /// first step), `d[j]` (`ν = dexp_j`), `w[j]` (`ν = wexp_j`).
+#[derive(Clone, Copy)]
 struct Jt {
     one: f64,
     wfix: f64,
     d: [f64; S],
     w: [f64; S],
+}
+
+impl Jt {
+    const ZERO: Jt = Jt {
+        one: 0.0,
+        wfix: 0.0,
+        d: [0.0; S],
+        w: [0.0; S],
+    };
 }
 
 fn jt(kind: Kind, x: f64) -> Jt {
@@ -507,6 +521,8 @@ struct StepOut {
     t1: [f64; S],
     a: [f64; S],
     err: f64,
+    /// Values at the step end (`θ = 1`, the last Radau node), from the node data.
+    end: Pt,
 }
 
 impl Solver {
@@ -547,7 +563,7 @@ impl Solver {
         let mut s = [0.0; KMAX];
         for k in 0..self.k {
             let x = th * h / self.tau[k];
-            let ex = (-x).exp();
+            let ex = kernel::exp_neg(x);
             let jj = jt(kind, x);
             let mut sk = ex * seg.s0[k] + seg.vh * th * jj.one;
             for j in 0..S {
@@ -629,7 +645,7 @@ impl Solver {
         for k in 0..self.k {
             let kp = &self.dense[i * self.k + k];
             let ex = if kp[0].amp != 0.0 || kp[1].amp != 0.0 {
-                (-kp[0].lam * th).exp()
+                kernel::exp_neg(kp[0].lam * th)
             } else {
                 0.0
             };
@@ -738,14 +754,24 @@ impl Solver {
         // q_i = f0_i / c-weights + M (W - wfix): linear in W
         let mut m = [[0.0; S]; S];
         let mut f0 = [0.0; S];
+        // per term at the step end (θ = c_S = 1): kernels, the decayed start values of q and S
+        let mut jend = [Jt::ZERO; KMAX];
+        let mut qend = [0.0; KMAX];
+        let mut send = [0.0; KMAX];
         for k in 0..self.k {
             let ck = self.c[k];
             for i in 0..S {
                 let x = c[i] * h / self.tau[k];
                 let jj = jt(kind, x);
-                let mut fi = (-x).exp() * q0[k];
+                let ex = kernel::exp_neg(x);
+                let mut fi = ex * q0[k];
                 if kind == Kind::First {
                     fi += wfix * 1.5 * c[i] * c[i].sqrt() * jj.wfix;
+                }
+                if i == S - 1 {
+                    qend[k] = fi;
+                    send[k] = ex * s0[k] + vh * jj.one;
+                    jend[k] = jj;
                 }
                 f0[i] += ck * fi;
                 let mut l = [0.0; S];
@@ -868,12 +894,34 @@ impl Solver {
         for i in 0..S {
             a[i] = (dfix[i] + z[i]).max(0.0).sqrt();
         }
+        // step end from the last node (θ = 1: every power of θ is 1)
+        let mut end = Pt {
+            d: dfix[S - 1] + z[S - 1],
+            v: vh,
+            dd: 0.0,
+            w: 0.0,
+            q: qend,
+            s: send,
+        };
+        let mut wend = seg.wfix;
+        for j in 0..S {
+            let (ed, ew) = (dexp(kind, j), wexp(kind, j));
+            end.v += seg.alpha[j] * ed;
+            wend += seg.beta[j];
+            for k in 0..self.k {
+                end.s[k] += seg.alpha[j] * ed * jend[k].d[j];
+                end.q[k] += seg.beta[j] * ew * jend[k].w[j];
+            }
+        }
+        end.v /= h;
+        end.w = wend;
         Ok(StepOut {
             seg,
             f,
             t1: [0.0; S],
             a,
             err: h * (d1.abs() + d2),
+            end,
         })
     }
 
@@ -901,7 +949,7 @@ impl Solver {
             let mut g = self.c_inf;
             let mut f = self.c_inf * pt.w;
             for k in 0..self.k {
-                let ek = (-(t - x) / self.tau[k]).exp();
+                let ek = kernel::exp_neg((t - x) / self.tau[k]);
                 phi += self.c[k] * (s[k] - ek * pt.s[k]);
                 g += self.c[k] * ek;
                 f += self.c[k] * ek * pt.q[k];
@@ -975,7 +1023,7 @@ impl Solver {
             for i in 0..S {
                 let x = c[i] * h / self.tau[k];
                 let jj = jt(Kind::Regular, x);
-                sfix[k][i] = (-x).exp() * s0[k] + vh * c[i] * jj.one;
+                sfix[k][i] = kernel::exp_neg(x) * s0[k] + vh * c[i] * jj.one;
                 let mut l = [0.0; S];
                 for j in 0..S {
                     l[j] = dexp(Kind::Regular, j) * b.pd[i][j] * jj.d[j];
@@ -1107,12 +1155,33 @@ impl Solver {
         for i in 0..S {
             a[i] = d1[i].max(0.0).sqrt();
         }
+        // step end from the last node (θ = 1)
+        let mut end = Pt {
+            d: dfix[S - 1] + z[S - 1],
+            v: vh,
+            dd: 0.0,
+            w: 0.0,
+            q: [0.0; KMAX],
+            s: [0.0; KMAX],
+        };
+        for j in 0..S {
+            end.v += seg.alpha[j] * dexp(Kind::Regular, j);
+        }
+        end.v /= h;
+        for k in 0..self.k {
+            let mut acc = sfix[k][S - 1];
+            for j in 0..S {
+                acc += nk[k][S - 1][j] * z[j];
+            }
+            end.s[k] = acc;
+        }
         Ok(StepOut {
             seg,
             f,
             t1,
             a,
             err: h * (pt.dd + fs).abs(),
+            end,
         })
     }
 
@@ -1285,11 +1354,71 @@ impl PeakTracker {
     }
 }
 
+/// Length of the next restitution step near the end of contact, where the force vanishes
+/// like `(t_end - t)^(3/2)`: the defect of a step of length `H` ending at distance `δ_e` from the
+/// end grows like `H^(S+1) (δ_e + κ H)^(-7/2)` (the `S`-th derivative of the force there). The
+/// model is calibrated on the step just accepted (`ratio`, length `h`, ending at distance
+/// `delta`); returns the largest `H <= delta` predicted at half the tolerance, and whether it
+/// reaches the end (the last step).
+fn end_approach(ratio: f64, h: f64, delta: f64) -> (f64, bool) {
+    const TARGET: f64 = 0.5;
+    let kappa = FAST_END_KAPPA;
+    let p = (S + 1) as f64;
+    let base = (delta + kappa * h).ln();
+    // log of the predicted ratio of a step of length H
+    let log_r =
+        |hh: f64| ratio.ln() + p * (hh / h).ln() - 3.5 * ((delta - (1.0 - kappa) * hh).ln() - base);
+    let goal = TARGET.ln();
+    if log_r(delta) <= goal {
+        return (delta, true);
+    }
+    // log_r increases with H: Newton from the right on the convex function
+    let mut hh = delta;
+    for _ in 0..8 {
+        let f = log_r(hh) - goal;
+        let df = p / hh + 3.5 * (1.0 - kappa) / (delta - (1.0 - kappa) * hh);
+        let next = hh - f / df;
+        if !(next > 0.0) {
+            hh *= 0.5;
+            continue;
+        }
+        if (next - hh).abs() <= 1e-3 * hh {
+            hh = next;
+            break;
+        }
+        hh = next;
+    }
+    (hh.min(delta), false)
+}
+
+/// Step size after a rejected step. The first retry assumes the nominal order (`h^(S+1)`);
+/// a second one at the same time uses the order observed between the two failed attempts
+/// (boundary layers and the end of contact reduce it), clamped to `[1, S + 1]`.
+#[derive(Default)]
+struct Retry {
+    last: Option<(f64, f64)>,
+}
+
+impl Retry {
+    fn next(&mut self, h: f64, ratio: f64) -> f64 {
+        let nominal = h * step_factor(ratio);
+        let next = match self.last {
+            Some((h0, r0)) if h0 > h && r0 > ratio && ratio.is_finite() => {
+                let p = ((r0 / ratio).ln() / (h0 / h).ln()).clamp(1.0, S as f64 + 1.0);
+                (h * (0.5 / ratio).powf(1.0 / p)).clamp(0.2 * h, nominal)
+            }
+            _ => nominal,
+        };
+        self.last = Some((h, ratio));
+        next
+    }
+}
+
 fn step_factor(ratio: f64) -> f64 {
     if ratio <= 0.0 || !ratio.is_finite() {
         return if ratio <= 0.0 { 3.0 } else { 0.2 };
     }
-    (0.9 * ratio.powf(-1.0 / (S as f64 + 1.0))).clamp(0.2, 3.0)
+    (0.9 * ratio.powf(-1.0 / (S as f64 + 1.0))).clamp(0.2, 2.0)
 }
 
 /// Impact of the unit sphere (`m = R = v0 = 1`) on a half-space with the equivalent
@@ -1443,6 +1572,7 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
     let mut sk = [0.0; KMAX];
     let mut kind = Kind::First;
     let (t_m, d_m, v_m, s_m, f_m);
+    let mut retry = Retry::default();
     loop {
         steps += 1;
         if steps > FAST_MAX_STEPS {
@@ -1464,12 +1594,13 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
         };
         let ratio = out.err / tol;
         if !(ratio <= 1.0) {
-            h *= step_factor(ratio);
+            h = retry.next(h, ratio);
             continue;
         }
+        retry = Retry::default();
         err_sum += out.err;
         let seg = out.seg;
-        let end = s.eval_seg(&seg, 1.0, true);
+        let end = out.end;
         if end.v > 0.0 {
             for i in 0..S {
                 peak.push(t + s.tab.c[i] * h, out.f[i]);
@@ -1587,7 +1718,11 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
         };
         let ratio = out.err / tol;
         let seg = out.seg;
-        let (g1, end) = s.contact_measure(&seg, 1.0);
+        let end = out.end;
+        let mut g1 = s.c_inf * end.d;
+        for k in 0..s.k {
+            g1 += s.c[k] * end.s[k];
+        }
         // the end of contact first: a step across it sees a kink (F = 0 beyond) and would be
         // rejected for the wrong reason
         if g1 <= 0.0 || ending {
@@ -1662,10 +1797,11 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
             }
         }
         if !(ratio <= 1.0) {
-            h *= step_factor(ratio);
+            h = retry.next(h, ratio);
             ending = false;
             continue;
         }
+        retry = Retry::default();
         // accept
         end_iter = 0;
         err_sum += out.err;
@@ -1689,7 +1825,25 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
                 value: d + v,
             });
         }
+        let h_done = h;
         h *= step_factor(ratio);
+        if end_plan.is_none() {
+            // distance to the end of contact from g and dg/dt at the step end
+            let mut dg = s.c_inf * v;
+            for k in 0..s.k {
+                dg += s.c[k] * (v - sk[k] / s.tau[k]);
+            }
+            if dg < 0.0 && g1 > 0.0 {
+                let delta = -g1 / dg;
+                if delta < FAST_END_NEAR * h {
+                    let (next, last) = end_approach(ratio.max(1e-3), h_done, delta);
+                    h = next.min(h);
+                    if last {
+                        ending = true;
+                    }
+                }
+            }
+        }
         if let Some((te, last)) = end_plan {
             let rest = te - t;
             if rest <= 0.5 * last {
