@@ -1,16 +1,50 @@
 //! Accuracy of `fast` against the external table (`reference/external/cor_python.csv`, all 660
 //! rows) at rtol 1e-6 (bound 1e-6) and 1e-10 (bound 1e-9), median time per impact (best of
 //! `XREPS` runs, default 9), and consistency of histories. Env: `XRTOL` (one rtol only),
-//! `XDUMP` (append `rtol,row,cor,cor_ref,steps,time_us,nu,p2,p3` to a file).
+//! `XDUMP` (append `rtol,row,cor,cor_ref,steps,time_us,nu,p2,p3,error_estimate` to a file),
+//! `XROWS` (a CSV `nu,p2,p3,cor,...` to check instead of the external table).
 //! `cargo test --release --test fast_xcheck -- --ignored --nocapture`
 use mdr_impact::validate::external_rows;
 use mdr_impact::{fast, Groups, Impact};
 use std::time::Instant;
 
+struct Row {
+    nu: f64,
+    p2: f64,
+    p3: f64,
+    cor: f64,
+}
+
 #[test]
 #[ignore = "throwaway accuracy + timing"]
 fn xcheck() {
-    let rows = external_rows().unwrap();
+    // XROWS: another table with the columns nu,p2,p3,cor first (e.g. `cor --input` output)
+    let rows: Vec<Row> = match std::env::var("XROWS") {
+        Ok(path) => std::fs::read_to_string(path)
+            .unwrap()
+            .lines()
+            .skip(1)
+            .map(|l| {
+                let v: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
+                Row {
+                    nu: v[0],
+                    p2: v[1],
+                    p3: v[2],
+                    cor: v[3],
+                }
+            })
+            .collect(),
+        Err(_) => external_rows()
+            .unwrap()
+            .iter()
+            .map(|r| Row {
+                nu: r.nu,
+                p2: r.p2,
+                p3: r.p3,
+                cor: r.cor,
+            })
+            .collect(),
+    };
     let pr: Vec<_> = rows
         .iter()
         .map(|r| {
@@ -50,8 +84,15 @@ fn xcheck() {
                     .unwrap();
                 writeln!(
                     w,
-                    "{rtol:e},{i},{:.17e},{},{},{},{},{},{}",
-                    o.cor, r.cor, o.work.steps, best, r.nu, r.p2, r.p3
+                    "{rtol:e},{i},{:.17e},{},{},{},{},{},{},{}",
+                    o.cor,
+                    r.cor,
+                    o.work.steps,
+                    best,
+                    r.nu,
+                    r.p2,
+                    r.p3,
+                    o.cor_error_estimate.unwrap_or(f64::NAN)
                 )
                 .unwrap();
             }
