@@ -66,7 +66,7 @@ pub fn settings() -> Vec<SolverSetting> {
     ]
 }
 
-/// Settings compared against the external table (all 660 rows each).
+/// Settings compared against the external tables (every row of both).
 pub fn external_settings() -> Vec<SolverSetting> {
     vec![
         SolverSetting {
@@ -632,16 +632,32 @@ pub struct ExternalRow {
     pub est_rel_err: f64,
 }
 
-/// The external reference table, embedded at build time (`reference/external/cor_python.csv`).
+/// The external reference table, embedded at build time (`reference/external/cor_python.csv`):
+/// a grid over the paper's range and beyond, and 100 random points.
 pub const EXTERNAL_TABLE: &str = include_str!("../reference/external/cor_python.csv");
 
-/// Parse the external reference table.
+/// Its second part (`reference/external/cor_python_corner.csv`): the most dissipative corner of
+/// the range (CoR down to 5.5e-4), random points, its edge and the points where an earlier
+/// `fast` missed its tolerance.
+pub const EXTERNAL_CORNER_TABLE: &str = include_str!("../reference/external/cor_python_corner.csv");
+
+/// Parse the external reference tables: the rows of [`EXTERNAL_TABLE`], then those of
+/// [`EXTERNAL_CORNER_TABLE`].
 pub fn external_rows() -> Result<Vec<ExternalRow>> {
-    let mut rdr = csv::Reader::from_reader(EXTERNAL_TABLE.as_bytes());
+    let mut out = parse_external(EXTERNAL_TABLE, "reference/external/cor_python.csv")?;
+    out.extend(parse_external(
+        EXTERNAL_CORNER_TABLE,
+        "reference/external/cor_python_corner.csv",
+    )?);
+    Ok(out)
+}
+
+fn parse_external(table: &str, file: &str) -> Result<Vec<ExternalRow>> {
+    let mut rdr = csv::Reader::from_reader(table.as_bytes());
     let mut out = Vec::new();
     for (i, rec) in rdr.records().enumerate() {
         let bad = |m: String| Error::Csv {
-            file: "reference/external/cor_python.csv".into(),
+            file: file.into(),
             line: i as u64 + 2,
             message: m,
         };
@@ -1067,10 +1083,13 @@ requested accuracy unaffordable within the work limit (4e8 element updates) it r
 instead of returning an inaccurate number. Re-run: `mdr-impact validate`; single values: \
 `mdr-impact cor --nu NU --p2 P2 --p3 P3 --solver S --rtol R`.\n";
 
-const EXTERNAL_TEXT: &str = "Inputs: the 660 rows of `reference/external/cor_python.csv`: the full grid \
-nu in {-0.9, -0.5, 0, 0.3, 0.45, 0.49, 0.499, 0.5} x log10 p2 in {-4..2} x log10 p3 in {-3..4} (560 rows, the \
-paper's range and beyond) and 100 random points. Reference: an independent SciPy solution of the Lee–Radok/Ting \
-impact (implicit Radau and explicit DOP853 cross-checked, estimated accuracy 2.3e-13; provenance and \
+const EXTERNAL_TEXT: &str = "Inputs: the 660 rows of `reference/external/cor_python.csv` (the full grid \
+nu in {-0.9, -0.5, 0, 0.3, 0.45, 0.49, 0.499, 0.5} x log10 p2 in {-4..2} x log10 p3 in {-3..4}: 560 rows, the \
+paper's range and beyond; and 100 random points), then the 105 rows of \
+`reference/external/cor_python_corner.csv` (the most dissipative corner, log10 p2 in [-4, -2.5] x log10 p3 in \
+[0.5, 2.3]: 60 random points, 16 on its edge nu -> -1, p2 = 1e-4, and 29 points with CoR < 0.002 where an earlier \
+`fast` missed rtol 1e-6; CoR down to 5.5e-4). Reference: an independent SciPy solution of the Lee–Radok/Ting \
+impact (implicit Radau and explicit DOP853 cross-checked, estimated accuracy 1.1e-12 or better; provenance and \
 regeneration in `reference/external/README.md`). Relative errors, max / mean over all rows. Re-run: \
 `mdr-impact validate`, or `cargo test --release --test external_reference -- --ignored`.\n\n";
 

@@ -1,6 +1,7 @@
-//! Agreement with the external reference table (`reference/external/cor_python.csv`, computed
-//! with SciPy outside the project, estimated accuracy 2.3e-13): every tenth row by default, all
-//! 660 rows with `cargo test --release --test external_reference -- --ignored`.
+//! Agreement with the external reference tables (`reference/external/cor_python.csv` and
+//! `cor_python_corner.csv`, computed with SciPy outside the project, estimated accuracy 1.1e-12
+//! or better): every tenth row by default, all 765 rows with
+//! `cargo test --release --test external_reference -- --ignored`.
 
 use mdr_impact::validate::{external_rows, ExternalRow};
 use mdr_impact::{solve, Groups, Impact, SolveOptions, SolverKind};
@@ -35,12 +36,12 @@ fn check(rows: &[ExternalRow], solver: SolverKind, rtol: f64, bound: f64) {
 #[test]
 fn reference_solver_subset() {
     let rows: Vec<ExternalRow> = external_rows().unwrap().into_iter().step_by(10).collect();
-    assert_eq!(rows.len(), 66);
+    assert_eq!(rows.len(), 77);
     check(&rows, SolverKind::Reference, 1e-10, 1e-9);
 }
 
 #[test]
-#[ignore = "slow: 660 impacts, about 35 s of CPU"]
+#[ignore = "slow: 765 impacts, about 45 s of CPU"]
 fn reference_solver_all_rows() {
     check(
         &external_rows().unwrap(),
@@ -51,7 +52,17 @@ fn reference_solver_all_rows() {
 }
 
 #[test]
-#[ignore = "slow: 660 MDR impacts, about 45 s of CPU (stiff cases need 10 s each)"]
+#[ignore = "slow: 765 MDR impacts, minutes of CPU (stiff cases need 10 s each)"]
 fn mdr_all_rows() {
     check(&external_rows().unwrap(), SolverKind::Mdr, 1e-4, 1e-4);
+}
+
+/// The acceptance rule for the reduced solver, on every row of both tables: rtol 1e-6
+/// within 1e-6 and rtol 1e-10 within 1e-9 (about 0.2 s of CPU).
+#[test]
+fn fast_solver_all_rows() {
+    let rows = external_rows().unwrap();
+    assert_eq!(rows.len(), 765);
+    check(&rows, SolverKind::Fast, 1e-6, 1e-6);
+    check(&rows, SolverKind::Fast, 1e-10, 1e-9);
 }

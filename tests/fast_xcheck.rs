@@ -1,4 +1,4 @@
-//! Accuracy of `fast` against the external table (`reference/external/cor_python.csv`, all 660
+//! Accuracy of `fast` against the external tables (`reference/external/cor_python*.csv`, all 765
 //! rows) at rtol 1e-6 (bound 1e-6) and 1e-10 (bound 1e-9), median time per impact (best of
 //! `XREPS` runs, default 9), and consistency of histories. Env: `XRTOL` (one rtol only),
 //! `XDUMP` (append `rtol,row,cor,cor_ref,steps,time_us,nu,p2,p3,error_estimate` to a file),
