@@ -83,3 +83,10 @@ pub(crate) fn mul_vec<const N: usize>(a: &Mat<N>, x: &[f64; N]) -> [f64; N] {
     }
     out
 }
+
+/// Maximum absolute row sum (the induced infinity norm).
+pub(crate) fn norm_inf<const N: usize>(a: &Mat<N>) -> f64 {
+    a.iter()
+        .map(|row| row.iter().map(|x| x.abs()).sum::<f64>())
+        .fold(0.0, f64::max)
+}

@@ -522,6 +522,23 @@ struct Solver {
     last_seg: usize,
 }
 
+/// A Ting root and what the Newton stop of a restitution step needs at it.
+#[derive(Clone, Copy, Default)]
+struct Root {
+    /// `t_1`.
+    t1: f64,
+    /// Force at the node.
+    f: f64,
+    /// `d(t_1)`.
+    d1: f64,
+    /// `d'(t_1)`.
+    v1: f64,
+    /// `G_eq(t - t_1)`.
+    g: f64,
+    /// `dG_eq(t - t_1)/dt_1 = Σ c_k exp(-(t - t_1)/tau_k) / tau_k`.
+    gt: f64,
+}
+
 /// One converged compression or restitution step.
 struct StepOut {
     seg: Seg,
@@ -933,15 +950,15 @@ impl Solver {
         })
     }
 
-    /// Ting/Graham root `t_1` at time `t` with indentation `d` and `S_k(t) = s_k`; returns
-    /// `(t_1, F, d(t_1))`. `t_1 = 0` (and `F = 0`) once `c_inf d + Σ c_k s_k <= 0`.
-    fn t1_root(&mut self, t: f64, d: f64, s: &[f64; KMAX], guess: f64) -> Result<(f64, f64, f64)> {
+    /// Ting/Graham root `t_1` at time `t` with indentation `d` and `S_k(t) = s_k`, with the force
+    /// and local derivatives ([`Root`]). `t_1 = 0` (and `F = 0`) once `c_inf d + Σ c_k s_k <= 0`.
+    fn t1_root(&mut self, t: f64, d: f64, s: &[f64; KMAX], guess: f64) -> Result<Root> {
         let mut phi0 = self.c_inf * d;
         for k in 0..self.k {
             phi0 += self.c[k] * s[k];
         }
         if phi0 <= 0.0 {
-            return Ok((0.0, 0.0, 0.0));
+            return Ok(Root::default());
         }
         let tm = self.t_m;
         let (mut lo, mut hi) = (0.0, tm);
@@ -955,18 +972,28 @@ impl Solver {
             let pt = self.comp_at(x);
             let mut phi = self.c_inf * (d - pt.d);
             let mut g = self.c_inf;
+            let mut gt = 0.0;
             let mut f = self.c_inf * pt.w;
             for k in 0..self.k {
                 let ek = kernel::exp_neg((t - x) / self.tau[k]);
                 phi += self.c[k] * (s[k] - ek * pt.s[k]);
                 g += self.c[k] * ek;
+                gt += self.c[k] * ek / self.tau[k];
                 f += self.c[k] * ek * pt.q[k];
             }
             let dphi = -pt.v * g;
+            let root = |t1: f64, f: f64, d1: f64| Root {
+                t1,
+                f,
+                d1,
+                v1: pt.v,
+                g,
+                gt,
+            };
             if phi > 0.0 {
                 lo = x;
                 if x == tm || (!hi_checked && hi - x < 1e-15 * tm) {
-                    return Ok((x, K16 * f, pt.d));
+                    return Ok(root(x, K16 * f, pt.d));
                 }
             } else {
                 hi = x;
@@ -975,14 +1002,14 @@ impl Solver {
             let newton = x - phi / dphi;
             let step = (newton - x).abs();
             if step <= 1e-14 * tm || hi - lo <= 1e-14 * tm {
-                return Ok((x, K16 * f, pt.d));
+                return Ok(root(x, K16 * f, pt.d));
             }
             if step <= self.accept_step && newton >= lo && newton <= hi {
                 // quadratic convergence: the Newton point is exact to ~step^2; move F and d
                 // there to first order (dF/dt_1 = (16/3) G_eq(t - t_1) w'(t_1))
                 let dx = newton - x;
                 let df = K16 * 1.5 * pt.d.max(0.0).sqrt() * pt.v * g;
-                return Ok((newton, K16 * f + df * dx, pt.d + pt.v * dx));
+                return Ok(root(newton, K16 * f + df * dx, pt.d + pt.v * dx));
             }
             x = if newton > lo && newton < hi {
                 newton
@@ -1062,6 +1089,8 @@ impl Solver {
         let mut t1 = *t1_guess;
         let mut f = [0.0; S];
         let mut d1 = [0.0; S];
+        let mut roots = [Root::default(); S];
+        let a_norm = linalg::norm_inf(&b.a);
         let mut prev = f64::INFINITY;
         let mut converged = false;
         for it in 0..=FAST_NEWTON_MAX_ITER {
@@ -1074,10 +1103,10 @@ impl Solver {
                     }
                     si[k] = acc;
                 }
-                let (r1, fi, di) = self.t1_root(t0 + c[i] * h, dfix[i] + z[i], &si, t1[i])?;
-                t1[i] = r1;
-                f[i] = fi;
-                d1[i] = di;
+                roots[i] = self.t1_root(t0 + c[i] * h, dfix[i] + z[i], &si, t1[i])?;
+                t1[i] = roots[i].t1;
+                f[i] = roots[i].f;
+                d1[i] = roots[i].d1;
             }
             if converged || it == FAST_NEWTON_MAX_ITER {
                 break;
@@ -1107,21 +1136,30 @@ impl Solver {
             if !dmax.is_finite() {
                 break;
             }
-            // as in compression, at d(t_1), with dd(t_1)/dd <= G_glassy / c_inf
-            let mut d1min = f64::INFINITY;
+            // second-order remainder of the forces after this correction, node by node:
+            // it moves t_1 by dt = dF / (dF/dt_1), dF/dt_1 = (16/3) w'(t_1) G_eq, and
+            // F'' = (16/3) [w''(t_1) G_eq + w'(t_1) dG_eq/dt_1] (w = d^(3/2); w'' from
+            // d'' = -F >= -F_glassy); the next correction is about h^2 |A| F'' dt^2 / 2
+            let df = linalg::mul_vec(&jf, &delta);
+            let mut rem: f64 = 0.0;
             for i in 0..S {
-                d1min = d1min.min(if t1[i] > 0.0 { d1[i] } else { 0.0 });
+                let r = &roots[i];
+                if r.t1 <= 0.0 || r.v1 <= 0.0 || r.d1 <= 0.0 {
+                    continue;
+                }
+                let sd = r.d1.sqrt();
+                let w1 = 1.5 * sd * r.v1;
+                let w2 = 0.75 * r.v1 * r.v1 / sd + 1.5 * sd * K16 * self.glassy * r.d1 * sd;
+                let dt = df[i] / (K16 * w1 * r.g);
+                rem = rem.max(0.5 * K16 * (w2 * r.g + w1 * r.gt) * dt * dt);
             }
-            let g = self.glassy * self.glassy / self.c_inf;
-            let curv = 0.5 * h2 * 0.75 * K16 * g / d1min.max(0.0).sqrt();
             converged = newton_done(dmax, scale, prev, self.rtol)
-                || quadratic_done(dmax, scale, curv, self.rtol);
+                || next_correction_done(h2 * a_norm * rem, scale, self.rtol);
             prev = dmax;
             if converged {
                 // the last correction is at the accuracy floor: move the forces to first order
                 // instead of solving the Ting roots again (t_1, d(t_1) keep an O(delta) lag,
                 // used only for guesses and the contact radius of the history)
-                let df = linalg::mul_vec(&jf, &delta);
                 for i in 0..S {
                     f[i] += df[i];
                 }
@@ -1158,7 +1196,7 @@ impl Solver {
                 break;
             }
         }
-        let (_, fs, _) = self.t1_root(t0 + ts * h, pt.d, &pt.s, g)?;
+        let fs = self.t1_root(t0 + ts * h, pt.d, &pt.s, g)?.f;
         let mut a = [0.0; S];
         for i in 0..S {
             a[i] = d1[i].max(0.0).sqrt();
@@ -1325,6 +1363,14 @@ fn update(z: &mut [f64; S], delta: &[f64; S]) -> (f64, f64) {
 fn quadratic_done(dmax: f64, scale: f64, curv: f64, rtol: f64) -> bool {
     let tol = (1e-4 * rtol).max(1e-14);
     curv.is_finite() && curv * dmax * dmax * FAST_QUADRATIC_SAFETY <= tol * scale
+}
+
+/// Newton stop from an estimate `next` of the next correction (the second-order remainder
+/// propagated through one collocation solve): [`FAST_QUADRATIC_SAFETY`] times it below the stop
+/// level of [`newton_done`].
+fn next_correction_done(next: f64, scale: f64, rtol: f64) -> bool {
+    let tol = (1e-4 * rtol).max(1e-14);
+    next.is_finite() && next * FAST_QUADRATIC_SAFETY <= tol * scale
 }
 
 /// Newton stop: a correction at rounding level of the increments, or stagnation near it.
