@@ -10,25 +10,31 @@ pub(crate) type Mat<const N: usize> = [[f64; N]; N];
 pub(crate) fn solve<const N: usize>(mut m: Mat<N>, mut b: [f64; N]) -> Option<[f64; N]> {
     for col in 0..N {
         let mut p = col;
+        let mut best = m[col][col].abs();
         for r in col + 1..N {
-            if m[r][col].abs() > m[p][col].abs() {
+            let v = m[r][col].abs();
+            if v > best {
+                best = v;
                 p = r;
             }
         }
-        if !(m[p][col].abs() > 0.0) || !m[p][col].is_finite() {
+        if !(best > 0.0 && best.is_finite()) {
             return None;
         }
-        m.swap(col, p);
-        b.swap(col, p);
-        let inv = 1.0 / m[col][col];
+        if p != col {
+            m.swap(col, p);
+            b.swap(col, p);
+        }
+        let pivot = m[col];
+        let inv = 1.0 / pivot[col];
+        let bc = b[col];
         for r in col + 1..N {
             let f = m[r][col] * inv;
-            if f != 0.0 {
-                for c in col..N {
-                    m[r][c] -= f * m[col][c];
-                }
-                b[r] -= f * b[col];
+            let row = &mut m[r];
+            for c in col + 1..N {
+                row[c] -= f * pivot[c];
             }
+            b[r] -= f * bc;
         }
     }
     let mut x = [0.0; N];

@@ -194,6 +194,8 @@ struct Basis {
     vw_inv: Mat<S>,
     /// Collocation: `D = dfix - h^2 A F`.
     a: Mat<S>,
+    /// `A^-1` (the Newton matrix is formed as `A^-1 + h^2 J`).
+    a_inv: Mat<S>,
 }
 
 struct Tables {
@@ -260,13 +262,15 @@ fn build_basis(kind: Kind, c: &[f64; S]) -> Basis {
     // The tables are fixed and well conditioned; failure here is a programming error.
     let vd_inv = linalg::inverse(&pd).expect("collocation Vandermonde (d) is regular");
     let vw_inv = linalg::inverse(&pw).expect("collocation Vandermonde (w) is regular");
-    let a = linalg::inverse(&linalg::mul(&p2, &vd_inv)).expect("collocation matrix is regular");
+    let a_inv = linalg::mul(&p2, &vd_inv);
+    let a = linalg::inverse(&a_inv).expect("collocation matrix is regular");
     Basis {
         pd,
         pw,
         vd_inv,
         vw_inv,
         a,
+        a_inv,
     }
 }
 
@@ -402,68 +406,76 @@ const SIGMA_LAMBDA: f64 = 2.0;
 /// series of the exact solution (`amp = 0`, terms decay like `λ^n / n!`); for `λ > 1/2` it is
 /// the polynomial particular solution `Y = Σ_j (-1/λ)^j (1/λ) P^(j+1)` of
 /// `y' = -λ y + P'` and `amp = y(0) - Y(0)`. Both are exact for the step's polynomial `P`.
-#[derive(Clone, Copy, Debug)]
+/// The `n` coefficients (of powers of `θ`, or of `sqrt(θ)` on the first step) are
+/// `coef[off..off + n]` of the solver's coefficient store.
+#[derive(Clone, Copy, Debug, Default)]
 struct KernelPoly {
     lam: f64,
     amp: f64,
+    off: usize,
     n: usize,
-    /// Coefficients of powers of `θ`, or of `sqrt(θ)` on the first step.
-    c: [f64; NT],
 }
 
 impl KernelPoly {
     /// First step, `λ <= 2`: `y = Σ_n y_n σ^n`, `σ = sqrt(θ)`, `y_n = p_n - (2λ/n) y_(n-2)`,
     /// `y_0 = 0`; `p` holds the forcing's coefficients of `σ^n`. `None` for `λ > 2`.
-    fn new_sigma(p: &[f64], lam: f64) -> Option<Self> {
+    fn new_sigma(p: &[f64], lam: f64, coef: &mut Vec<f64>) -> Option<Self> {
         if lam > SIGMA_LAMBDA {
             return None;
         }
-        let mut c = [0.0; NT];
+        let off = coef.len();
+        coef.push(0.0);
         let mut big: f64 = 0.0;
         let mut n = 1;
         while n < NT {
             let pn = if n < p.len() { p[n] } else { 0.0 };
-            let prev = if n >= 2 { c[n - 2] } else { 0.0 };
-            c[n] = pn - 2.0 * lam / n as f64 * prev;
-            big = big.max(c[n].abs());
+            let prev = if n >= 2 { coef[off + n - 2] } else { 0.0 };
+            let cn = pn - 2.0 * lam / n as f64 * prev;
+            coef.push(cn);
+            big = big.max(cn.abs());
             n += 1;
-            if n > p.len() && c[n - 1].abs() <= 1e-18 * big && c[n - 2].abs() <= 1e-18 * big {
+            if n > p.len()
+                && coef[off + n - 1].abs() <= 1e-18 * big
+                && coef[off + n - 2].abs() <= 1e-18 * big
+            {
                 break;
             }
         }
         Some(KernelPoly {
             lam,
             amp: 0.0,
+            off,
             n,
-            c,
         })
     }
 
-    fn new(y0: f64, p: &[f64], lam: f64) -> Self {
-        let mut c = [0.0; NT];
+    fn new(y0: f64, p: &[f64], lam: f64, coef: &mut Vec<f64>) -> Self {
+        let off = coef.len();
         if lam <= PARTICULAR_LAMBDA {
-            c[0] = y0;
+            coef.push(y0);
             let mut big = y0.abs();
             let mut n = 1;
             while n < NT {
                 let pn = if n < p.len() { p[n] } else { 0.0 };
-                c[n] = (-lam * c[n - 1] + n as f64 * pn) / n as f64;
-                big = big.max(c[n].abs());
+                let cn = (-lam * coef[off + n - 1] + n as f64 * pn) / n as f64;
+                coef.push(cn);
+                big = big.max(cn.abs());
                 n += 1;
-                if n >= p.len() && c[n - 1].abs() <= 1e-18 * big {
+                if n >= p.len() && cn.abs() <= 1e-18 * big {
                     break;
                 }
             }
             KernelPoly {
                 lam,
                 amp: 0.0,
+                off,
                 n,
-                c,
             }
         } else {
             let eps = 1.0 / lam;
             // derivative coefficients, repeatedly
-            let mut der = [0.0; NT];
+            let mut c = [0.0; S + 2];
+            let mut der = [0.0; S + 2];
             let deg = p.len() - 1;
             for i in 0..deg {
                 der[i] = (i + 1) as f64 * p[i + 1];
@@ -480,21 +492,23 @@ impl KernelPoly {
                 len -= 1;
                 fac *= -eps;
             }
+            let n = deg.max(1);
+            coef.extend_from_slice(&c[..n]);
             KernelPoly {
                 lam,
                 amp: y0 - c[0],
-                n: deg.max(1),
-                c,
+                off,
+                n,
             }
         }
     }
 
     /// Value at `θ`; `ex = exp(-λ θ)` (only used when `amp != 0`), `x = θ` or `sqrt(θ)`.
     #[inline]
-    fn eval(&self, x: f64, ex: f64) -> f64 {
+    fn eval(&self, coef: &[f64], x: f64, ex: f64) -> f64 {
         let mut acc = 0.0;
-        for i in (0..self.n).rev() {
-            acc = acc * x + self.c[i];
+        for &c in coef[self.off..self.off + self.n].iter().rev() {
+            acc = acc * x + c;
         }
         if self.amp != 0.0 {
             acc += self.amp * ex;
@@ -508,6 +522,8 @@ struct Solver {
     /// Newton step of `t_1` below which the Newton point is taken with first-order updates.
     accept_step: f64,
     dense: Vec<[KernelPoly; 2]>,
+    /// Coefficient store of the dense kernel polynomials.
+    coef: Vec<f64>,
     dense_ok: Vec<bool>,
     c_inf: f64,
     c: [f64; KMAX],
@@ -644,8 +660,8 @@ impl Solver {
             let sig = th.sqrt();
             for k in 0..self.k {
                 let kp = &self.dense[i * self.k + k];
-                s[k] = kp[0].eval(sig, 0.0);
-                q[k] = kp[1].eval(sig, 0.0);
+                s[k] = kp[0].eval(&self.coef, sig, 0.0);
+                q[k] = kp[1].eval(&self.coef, sig, 0.0);
             }
             return Pt {
                 d,
@@ -674,8 +690,8 @@ impl Solver {
             } else {
                 0.0
             };
-            s[k] = kp[0].eval(th, ex);
-            q[k] = kp[1].eval(th, ex);
+            s[k] = kp[0].eval(&self.coef, th, ex);
+            q[k] = kp[1].eval(&self.coef, th, ex);
         }
         Pt {
             d,
@@ -691,6 +707,7 @@ impl Solver {
     fn build_dense(&mut self) {
         let mut dense = Vec::with_capacity(self.comp.len() * self.k);
         let mut ok = Vec::with_capacity(self.comp.len());
+        let mut coef = Vec::with_capacity(self.comp.len() * self.k * 24);
         for seg in &self.comp {
             if seg.kind == Kind::First {
                 // forcing coefficients of σ^n: d = vh σ^2 + Σ α_j σ^(5+j), w = wfix σ^3 + Σ β_j σ^(6+j)
@@ -703,15 +720,16 @@ impl Solver {
                 let mut good = true;
                 for k in 0..self.k {
                     let lam = seg.h / self.tau[k];
-                    match (
-                        KernelPoly::new_sigma(&ps, lam),
-                        KernelPoly::new_sigma(&pq, lam),
-                    ) {
-                        (Some(a), Some(b)) => dense.push([a, b]),
-                        _ => {
+                    // both or neither: the same λ
+                    match KernelPoly::new_sigma(&ps, lam, &mut coef) {
+                        Some(a) => {
+                            let b = KernelPoly::new_sigma(&pq, lam, &mut coef)
+                                .expect("same λ as the first series");
+                            dense.push([a, b]);
+                        }
+                        None => {
                             good = false;
-                            let z = KernelPoly::new(0.0, &[0.0, 0.0], 0.0);
-                            dense.push([z, z]);
+                            dense.push([KernelPoly::default(); 2]);
                         }
                     }
                 }
@@ -729,12 +747,13 @@ impl Solver {
             for k in 0..self.k {
                 let lam = seg.h / self.tau[k];
                 dense.push([
-                    KernelPoly::new(seg.s0[k], &ps, lam),
-                    KernelPoly::new(seg.q0[k], &pq, lam),
+                    KernelPoly::new(seg.s0[k], &ps, lam, &mut coef),
+                    KernelPoly::new(seg.q0[k], &pq, lam, &mut coef),
                 ]);
             }
         }
         self.dense = dense;
+        self.coef = coef;
         self.dense_ok = ok;
     }
 
@@ -867,7 +886,7 @@ impl Solver {
                 }
             }
             let delta = newton_correction(
-                &b.a,
+                &b.a_inv,
                 &jf,
                 h2,
                 r,
@@ -1126,7 +1145,7 @@ impl Solver {
                 }
             }
             let delta = newton_correction(
-                &b.a,
+                &b.a_inv,
                 &jf,
                 h2,
                 r,
@@ -1322,29 +1341,29 @@ fn pow15_increment(d: f64, delta: f64) -> f64 {
     }
 }
 
-/// Add a Newton correction; returns `(max |delta|, max |z|)`.
 /// Newton correction of a collocation step: solve `(I + h^2 A J) delta = r`, with `A` the
-/// collocation matrix and `J` the force Jacobian at the nodes.
+/// collocation matrix and `J` the force Jacobian at the nodes, in the equivalent form
+/// `(A^-1 + h^2 J) delta = A^-1 r` (no matrix product).
 fn newton_correction(
-    a: &[[f64; S]; S],
+    a_inv: &[[f64; S]; S],
     jf: &[[f64; S]; S],
     h2: f64,
     r: [f64; S],
     what: &'static str,
 ) -> Result<[f64; S]> {
-    let mut jac = linalg::mul(a, jf);
-    for (i, row) in jac.iter_mut().enumerate() {
-        for x in row.iter_mut() {
-            *x *= h2;
+    let mut jac = *a_inv;
+    for (row, jrow) in jac.iter_mut().zip(jf) {
+        for (x, j) in row.iter_mut().zip(jrow) {
+            *x += h2 * j;
         }
-        row[i] += 1.0;
     }
-    linalg::solve(jac, r).ok_or(Error::NoConvergence {
+    linalg::solve(jac, linalg::mul_vec(a_inv, &r)).ok_or(Error::NoConvergence {
         what,
         iterations: 0,
     })
 }
 
+/// Add a Newton correction; returns `(max |delta|, max |z|)`.
 fn update(z: &mut [f64; S], delta: &[f64; S]) -> (f64, f64) {
     let mut dmax: f64 = 0.0;
     let mut scale: f64 = 0.0;
@@ -1571,6 +1590,7 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
             tab: tables(),
             comp: Vec::with_capacity(64),
             dense: Vec::new(),
+            coef: Vec::new(),
             dense_ok: Vec::new(),
             t_m: 0.0,
             evaluations: 0,
