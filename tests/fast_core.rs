@@ -139,7 +139,7 @@ fn work_is_pinned() {
     );
 }
 const PINNED_STEPS: u64 = 18;
-const PINNED_EVALUATIONS: u64 = 138;
+const PINNED_EVALUATIONS: u64 = 151;
 
 #[test]
 fn errors_are_reported() {

@@ -1661,6 +1661,7 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
     let mut kind = Kind::First;
     let (t_m, d_m, v_m, s_m, f_m);
     let mut retry = Retry::default();
+    let mut h_full = 0.0;
     loop {
         steps += 1;
         if steps > FAST_MAX_STEPS {
@@ -1704,6 +1705,7 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
                 hh.push(t, d, v, f_n, d.max(0.0).sqrt());
             }
             kind = Kind::Regular;
+            h_full = h;
             h *= step_factor(ratio);
             continue;
         }
@@ -1751,7 +1753,8 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
         if let Some(hh) = hist.as_mut() {
             hh.push(t_m, d_m, v_m, f_m, d_m.max(0.0).sqrt());
         }
-        h = (th * h).max(0.2 * h);
+        // restitution starts with the length of the last full compression step
+        h = (th * h).max(h_full);
         break;
     }
     s.t_m = t_m;
