@@ -51,7 +51,24 @@ pub(crate) fn exp_neg(x: f64) -> f64 {
 
 /// `Ĵ_ν(x)` for any `ν > 0`, `x >= 0` (series or asymptotic expansion).
 pub(crate) fn jhat(nu: f64, x: f64) -> f64 {
-    if x < ASYMPTOTIC_X {
+    let two_nu = 2.0 * nu;
+    if x < ASYMPTOTIC_X && two_nu.fract() == 0.0 && two_nu < 64.0 {
+        // the same series with 1/j and 1/(ν + j) = 2/(2ν + 2j) from the table (no divisions)
+        let two_nu = two_nu as usize;
+        let mut t = 1.0; // x^j / j!
+        let mut sum = 2.0 * RECIP[two_nu];
+        let mut j = 0;
+        loop {
+            j += 1;
+            t *= x * RECIP[j];
+            let term = 2.0 * t * RECIP[two_nu + 2 * j];
+            sum += term;
+            if (term <= 1e-17 * sum && j as f64 > x) || j > 200 {
+                break;
+            }
+        }
+        (-x).exp() * sum
+    } else if x < ASYMPTOTIC_X {
         let mut t = 1.0; // x^j / j!
         let mut sum = 1.0 / nu;
         let mut j = 0.0;

@@ -1317,6 +1317,19 @@ fn seg_d(seg: &Seg, th: f64) -> f64 {
     d
 }
 
+/// `(dd/dθ, d²d/dθ²)` of a step's polynomial at `θ` (per unit `θ`, not per unit time).
+fn seg_rates(seg: &Seg, th: f64) -> (f64, f64) {
+    let p = powers(seg.kind, th);
+    let mut v = seg.vh;
+    let mut a = 0.0;
+    for j in 0..S {
+        let e = dexp(seg.kind, j);
+        v += seg.alpha[j] * e * p.d1[j];
+        a += seg.alpha[j] * e * (e - 1.0) * p.d2[j];
+    }
+    (v, a)
+}
+
 /// `max(x, 0)^(3/2)`.
 #[inline]
 fn pow15(x: f64) -> f64 {
@@ -1710,9 +1723,10 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
             continue;
         }
         // v = 0 inside this step: Newton–bisection on v(θ)
+        // (the polynomial alone: the hereditary integrals once, at the root)
         let (mut lo, mut hi) = (0.0, 1.0);
         let mut th = 0.5;
-        let mut pt = s.eval_seg(&seg, th, true);
+        let (mut vt, mut at) = seg_rates(&seg, th);
         for it in 0..=tolerances::ROOT_MAX_ITER {
             if it == tolerances::ROOT_MAX_ITER {
                 return Err(Error::NoConvergence {
@@ -1720,12 +1734,12 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
                     iterations: it as u64,
                 });
             }
-            if pt.v > 0.0 {
+            if vt > 0.0 {
                 lo = th;
             } else {
                 hi = th;
             }
-            let newton = th - pt.v / (pt.dd * h);
+            let newton = th - vt / at;
             let next = if newton > lo && newton < hi {
                 newton
             } else {
@@ -1733,11 +1747,12 @@ fn run(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
             };
             let done = (next - th).abs() <= 1e-15 || hi - lo <= 1e-15;
             th = next;
-            pt = s.eval_seg(&seg, th, true);
+            (vt, at) = seg_rates(&seg, th);
             if done {
                 break;
             }
         }
+        let pt = s.eval_seg(&seg, th, true);
         for i in 0..S {
             if s.tab.c[i] < th {
                 peak.push(t + s.tab.c[i] * h, out.f[i]);
