@@ -7,20 +7,33 @@ use mdr_impact::validate::{external_rows, ExternalRow};
 use mdr_impact::{solve, Groups, Impact, SolveOptions, SolverKind};
 use rayon::prelude::*;
 
-fn check(rows: &[ExternalRow], solver: SolverKind, rtol: f64, bound: f64) {
+/// Every row within `bound`; a refusal (`AccuracyNotReached`) is accepted only for a CoR below
+/// `refuse_below` (the reference solver's error floor, see `reference_solver_all_rows`).
+fn check_refusing(
+    rows: &[ExternalRow],
+    solver: SolverKind,
+    rtol: f64,
+    bound: f64,
+    refuse_below: f64,
+) {
     let bad: Vec<String> = rows
         .par_iter()
         .filter_map(|r| {
             let imp = Impact::from_groups(Groups::new(r.nu, r.p2, r.p3).unwrap()).unwrap();
-            let o = solve(
+            let o = match solve(
                 &imp,
                 &SolveOptions {
                     solver,
                     rtol,
                     ..Default::default()
                 },
-            )
-            .unwrap();
+            ) {
+                Ok(o) => o,
+                Err(mdr_impact::Error::AccuracyNotReached { .. }) if r.cor < refuse_below => {
+                    return None
+                }
+                Err(e) => return Some(format!("nu={} p2={} p3={}: {e}", r.nu, r.p2, r.p3)),
+            };
             let err = ((o.cor - r.cor) / r.cor).abs();
             (err > bound).then(|| {
                 format!(
@@ -33,6 +46,10 @@ fn check(rows: &[ExternalRow], solver: SolverKind, rtol: f64, bound: f64) {
     assert!(bad.is_empty(), "{solver} rtol {rtol}: {bad:#?}");
 }
 
+fn check(rows: &[ExternalRow], solver: SolverKind, rtol: f64, bound: f64) {
+    check_refusing(rows, solver, rtol, bound, 0.0);
+}
+
 #[test]
 fn reference_solver_subset() {
     let rows: Vec<ExternalRow> = external_rows().unwrap().into_iter().step_by(10).collect();
@@ -40,14 +57,18 @@ fn reference_solver_subset() {
     check(&rows, SolverKind::Reference, 1e-10, 1e-9);
 }
 
+/// The reference solver's local tolerance has a floor (`2e-15`, absolute in the velocity);
+/// for the smallest CoR of the corner table (6.3e-4) it refuses rtol 1e-10 (its error there is
+/// about 1e-9) instead of answering.
 #[test]
 #[ignore = "slow: 765 impacts, about 45 s of CPU"]
 fn reference_solver_all_rows() {
-    check(
+    check_refusing(
         &external_rows().unwrap(),
         SolverKind::Reference,
         1e-10,
         1e-9,
+        1e-3,
     );
 }
 
