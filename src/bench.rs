@@ -247,7 +247,12 @@ pub fn plot(path: &Path, points: &[BenchPoint]) -> Result<()> {
 }
 
 /// The performance section of VALIDATION.md (between the markers).
-pub fn summary(points: &[BenchPoint], machine: &str, batch: Option<(usize, f64)>) -> String {
+pub fn summary(
+    points: &[BenchPoint],
+    machine: &str,
+    batch: Option<(usize, f64)>,
+    external: Option<&[ExternalTiming]>,
+) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -303,11 +308,152 @@ pub fn summary(points: &[BenchPoint], machine: &str, batch: Option<(usize, f64)>
             euler / fast
         );
     }
+    if let Some(rows) = external {
+        let _ = writeln!(
+            s,
+            "\n`fast` on every row of the external tables (the paper's range and its most \
+             dissipative corner; one core, CoR only, median of {EXTERNAL_REPEATS} solves per row; \
+             data: [`validation/bench_external.csv`](validation/bench_external.csv)):\n"
+        );
+        s.push_str(&external_summary(rows));
+    }
     if let Some((rows, secs)) = batch {
         let _ = writeln!(
             s,
             "\n`mdr-impact cor --input` path (`batch::solve_rows`, default solver and rtol 1e-6, all cores): \
              {rows} random rows of the paper's range in {secs:.2} s."
+        );
+    }
+    s
+}
+
+/// Time and error of `fast` on one row of the external tables, at rtol 1e-6 and 1e-10.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExternalTiming {
+    /// The row (groups and reference CoR).
+    pub row: crate::validate::ExternalRow,
+    /// Median wall time per impact (s) at rtol 1e-6 and 1e-10.
+    pub seconds: [f64; 2],
+    /// Relative CoR error against the row's reference at rtol 1e-6 and 1e-10.
+    pub cor_error: [f64; 2],
+}
+
+/// The two accuracies of [`ExternalTiming`].
+pub const EXTERNAL_RTOLS: [f64; 2] = [1e-6, 1e-10];
+
+/// Repeats per row and accuracy in [`external_timing`] (the median is kept).
+pub const EXTERNAL_REPEATS: usize = 5;
+
+/// Time `fast` (CoR only, one core) on every row of the external tables (`validate::external_rows`):
+/// the median of [`EXTERNAL_REPEATS`] solves per row and accuracy. `tick` after every row.
+pub fn external_timing(tick: &dyn Fn()) -> Result<Vec<ExternalTiming>> {
+    let mut out = Vec::new();
+    for row in crate::validate::external_rows()? {
+        let prony = crate::impact::Impact::from_groups(crate::impact::Groups::new(
+            row.nu, row.p2, row.p3,
+        )?)?
+        .canonical_relaxation();
+        let mut seconds = [0.0; 2];
+        let mut cor_error = [0.0; 2];
+        for (k, &rtol) in EXTERNAL_RTOLS.iter().enumerate() {
+            let mut times = Vec::with_capacity(EXTERNAL_REPEATS);
+            let mut cor = f64::NAN;
+            for _ in 0..EXTERNAL_REPEATS {
+                let t0 = Instant::now();
+                let o = crate::fast::impact(&prony, rtol, false)?;
+                times.push(t0.elapsed().as_secs_f64());
+                cor = o.cor;
+            }
+            times.sort_by(|a, b| a.total_cmp(b));
+            seconds[k] = times[times.len() / 2];
+            cor_error[k] = ((cor - row.cor) / row.cor).abs();
+        }
+        out.push(ExternalTiming {
+            row,
+            seconds,
+            cor_error,
+        });
+        tick();
+    }
+    Ok(out)
+}
+
+/// Groups of rows reported by [`external_summary`]: name and membership.
+#[allow(clippy::type_complexity)]
+pub fn external_groups() -> Vec<(&'static str, fn(&crate::validate::ExternalRow) -> bool)> {
+    vec![
+        ("all rows", |_| true),
+        ("nearly elastic (e >= 0.9)", |r| r.cor >= 0.9),
+        ("dissipative (0.1 <= e < 0.9)", |r| {
+            (0.1..0.9).contains(&r.cor)
+        }),
+        ("strongly dissipative (e < 0.1)", |r| r.cor < 0.1),
+        ("strongly compressible (nu < 0)", |r| r.nu < 0.0),
+        ("near-incompressible (nu >= 0.45)", |r| r.nu >= 0.45),
+        ("stiff (tau = p2 p3 <= 1e-3)", |r| r.p2 * r.p3 <= 1e-3),
+    ]
+}
+
+/// Write the per-row timings as CSV.
+pub fn write_external_csv(path: &Path, rows: &[ExternalTiming]) -> Result<()> {
+    write_atomic(path, |w| {
+        let mut c = csv::Writer::from_writer(w);
+        let io = |e: csv::Error| Error::io(path, e);
+        c.write_record([
+            "nu",
+            "p2",
+            "p3",
+            "cor_reference",
+            "seconds_rtol_1e-6",
+            "cor_error_rtol_1e-6",
+            "seconds_rtol_1e-10",
+            "cor_error_rtol_1e-10",
+        ])
+        .map_err(io)?;
+        for t in rows {
+            c.write_record(
+                [
+                    t.row.nu,
+                    t.row.p2,
+                    t.row.p3,
+                    t.row.cor,
+                    t.seconds[0],
+                    t.cor_error[0],
+                    t.seconds[1],
+                    t.cor_error[1],
+                ]
+                .map(|x| format!("{x:e}")),
+            )
+            .map_err(io)?;
+        }
+        c.flush().map_err(|e| Error::io(path, e))
+    })
+}
+
+/// Markdown table: per group, rows, median time and max CoR error at each accuracy.
+pub fn external_summary(rows: &[ExternalTiming]) -> String {
+    let mut s = String::from(
+        "| rows of the external tables | n | rtol 1e-6: median time | max CoR error | rtol 1e-10: median time | max CoR error |\n| --- | --- | --- | --- | --- | --- |\n",
+    );
+    for (name, member) in external_groups() {
+        let sel: Vec<&ExternalTiming> = rows.iter().filter(|t| member(&t.row)).collect();
+        if sel.is_empty() {
+            continue;
+        }
+        let median = |k: usize| {
+            let mut v: Vec<f64> = sel.iter().map(|t| t.seconds[k]).collect();
+            v.sort_by(|a, b| a.total_cmp(b));
+            v[v.len() / 2]
+        };
+        let max_err = |k: usize| sel.iter().map(|t| t.cor_error[k]).fold(0.0, f64::max);
+        let _ = writeln!(
+            s,
+            "| {name} | {} | {} | {:.1e} | {} | {:.1e} |",
+            sel.len(),
+            fmt_time(median(0)),
+            max_err(0),
+            fmt_time(median(1)),
+            max_err(1)
         );
     }
     s

@@ -358,6 +358,17 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             bench::write_csv(&out.join("bench.csv"), &points)?;
             bench::plot(&out.join("work-precision.svg"), &points)?;
+            let external = if quick {
+                None
+            } else {
+                let rows = mdr_impact::validate::external_rows()?.len() as u64;
+                let bar = progress_bar(rows, "bench fast on the external tables");
+                let t = bench::external_timing(&|| bar.inc(1))?;
+                bar.finish_and_clear();
+                bench::write_external_csv(&out.join("bench_external.csv"), &t)?;
+                print!("{}", bench::external_summary(&t));
+                Some(t)
+            };
             let batch = if batch_rows > 0 {
                 let rows = batch::random_rows(batch_rows, 1)?;
                 let t0 = std::time::Instant::now();
@@ -371,7 +382,8 @@ fn run(cli: Cli) -> Result<(), Error> {
             if !quick {
                 let existing =
                     std::fs::read_to_string(&report).map_err(|e| Error::io(&report, e))?;
-                let section = bench::summary(&points, &bench::machine(), batch);
+                let section =
+                    bench::summary(&points, &bench::machine(), batch, external.as_deref());
                 let text = validate::replace_performance(&existing, &section)?;
                 output::write_atomic(&report, |w| {
                     w.write_all(text.as_bytes())

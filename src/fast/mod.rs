@@ -49,9 +49,9 @@
 //! Against the independent Python reference tables (765 groups: the 660-row grid and random
 //! set, `nu ∈ [-0.9, 0.5]`, `p2 ∈ [1e-4, 1e2]`, `p3 ∈ [1e-3, 1e4]`, and 105 rows in the most
 //! dissipative corner, CoR down to 5.5e-4; reference error <= 1.1e-12): max relative CoR error
-//! 2.8e-7 at `rtol = 1e-6` and 1.1e-10 at `rtol = 1e-10` (`tests/external_reference.rs`
-//! checks every row against 1e-6 and 1e-9). On 5000 random groups against the reference
-//! solver: 4.1e-7 and 4.4e-10. Against the brute-force integration in
+//! 3.1e-7 at `rtol = 1e-6` and 1.1e-10 at `rtol = 1e-10` (`tests/external_reference.rs`
+//! checks every row against 1e-6 and 1e-9). On 5000 random groups over the range against the
+//! reference solver: 4.1e-7 at `rtol = 1e-6`. Against the brute-force integration in
 //! `tests/fast_independent.rs`: 5e-11 at `rtol = 1e-8`.
 //! Cost on the 660-row table (`tests/fast_xcheck.rs`, ignored): about 23 and 98 steps on
 //! average, median ~28 µs per impact at `rtol = 1e-6` and ~110 µs at `1e-10` (timings on a
