@@ -259,7 +259,8 @@ pub fn summary(
         "Measured by `mdr-impact bench` in one run on {machine}; times are medians over repeats \
          of a CoR-only solve (no histories), errors are against the reference solver at rtol 1e-11 \
          (outside the timed region). Data: [`validation/bench.csv`](validation/bench.csv); \
-         plot: `validation/work-precision.svg`. Machine-dependent, so not part of the staleness check.\n"
+         plot: `validation/work-precision.svg`. Machine-dependent, so not part of the staleness check. \
+         Re-run: `cargo run --release -- bench --batch-rows 100000` (about a minute on this machine).\n"
     );
     let _ = writeln!(s, "![work-precision](validation/work-precision.svg)\n");
     let _ = writeln!(
