@@ -138,8 +138,8 @@ fn work_is_pinned() {
         (PINNED_STEPS, PINNED_EVALUATIONS)
     );
 }
-const PINNED_STEPS: u64 = 18;
-const PINNED_EVALUATIONS: u64 = 151;
+const PINNED_STEPS: u64 = 16;
+const PINNED_EVALUATIONS: u64 = 155;
 
 #[test]
 fn errors_are_reported() {
