@@ -265,3 +265,33 @@ fn sampled_history() {
         .all(|&f| f <= o.max_force * (1.0 + 1e-12) && f >= 0.0));
     assert!(impact_sampled(&pr, 1e-10, 1).is_err());
 }
+
+/// Histories at given times (`impact_at`): the same forces as the uniform sampling at the same
+/// times, any ascending times accepted (also past the separation: free flight, no force), and
+/// bad time lists refused.
+#[test]
+fn history_at_given_times() {
+    use mdr_impact::theory::reference::{impact_at, impact_sampled};
+    let pr = canonical(0.3, 0.1, 1.0);
+    let uniform = impact_sampled(&pr, 1e-10, 33).unwrap();
+    let hu = uniform.history.unwrap();
+    let at = impact_at(&pr, 1e-10, &hu.t).unwrap();
+    let ha = at.history.unwrap();
+    assert_eq!(ha.len(), hu.len());
+    let peak = uniform.max_force;
+    for i in 0..hu.len() {
+        assert!(
+            (ha.force[i] - hu.force[i]).abs() <= 1e-9 * peak,
+            "t={}",
+            hu.t[i]
+        );
+        assert!((ha.d[i] - hu.d[i]).abs() <= 1e-10, "t={}", hu.t[i]);
+    }
+    let late = [0.0, 1e-6, 0.5, 2.0 * uniform.contact_time];
+    let h = impact_at(&pr, 1e-10, &late).unwrap().history.unwrap();
+    assert_eq!(h.len(), late.len());
+    assert_eq!(h.force[3], 0.0);
+    assert!(impact_at(&pr, 1e-10, &[]).is_err());
+    assert!(impact_at(&pr, 1e-10, &[0.5, 0.1]).is_err());
+    assert!(impact_at(&pr, 1e-10, &[-1.0]).is_err());
+}

@@ -928,6 +928,20 @@ pub fn impact_sampled(prony: &Prony, rtol: f64, samples: usize) -> Result<Outcom
     solve(prony, rtol, Sampling::None, samples)
 }
 
+/// As [`impact`], with the history sampled at the given ascending `times` (forces from the dense
+/// record, as in [`impact_sampled`]; times after the separation are free flight). For comparing
+/// another solver's history point by point, without interpolating the reference.
+pub fn impact_at(prony: &Prony, rtol: f64, times: &[f64]) -> Result<Outcome> {
+    if times.is_empty() || times.windows(2).any(|w| !(w[1] >= w[0])) || !(times[0] >= 0.0) {
+        return Err(Error::OutOfRange {
+            field: "sample times",
+            value: times.first().copied().unwrap_or(f64::NAN),
+            allowed: "a non-empty ascending list of times >= 0",
+        });
+    }
+    solve(prony, rtol, Sampling::Times(times.to_vec()), 0)
+}
+
 fn solve(prony: &Prony, rtol: f64, sampling: Sampling, samples: usize) -> Result<Outcome> {
     check(
         "rtol",
