@@ -165,6 +165,8 @@ struct Powers {
     w: [f64; S],
     /// `θ^{3/2}` (first step's fixed `w` term).
     w15: f64,
+    /// `θ`.
+    th: f64,
 }
 
 fn powers(kind: Kind, th: f64) -> Powers {
@@ -174,6 +176,7 @@ fn powers(kind: Kind, th: f64) -> Powers {
         d2: [0.0; S],
         w: [0.0; S],
         w15: 0.0,
+        th,
     };
     match kind {
         Kind::Regular => {
@@ -222,6 +225,8 @@ struct Basis {
     a: Mat<S>,
     /// `A^-1` (the Newton matrix is formed as `A^-1 + h^2 J`).
     a_inv: Mat<S>,
+    /// `|A|_inf`.
+    a_norm: f64,
 }
 
 struct Tables {
@@ -295,6 +300,7 @@ fn build_basis(kind: Kind, c: &[f64; S]) -> Basis {
         pw,
         vd_inv,
         vw_inv,
+        a_norm: linalg::norm_inf(&a),
         a,
         a_inv,
     }
@@ -605,17 +611,8 @@ impl Solver {
         let kind = seg.kind;
         let p = powers(kind, th);
         let h = seg.h;
-        let mut d = seg.dn + seg.vh * th;
-        let mut v = seg.vh;
-        let mut dd = 0.0;
-        for j in 0..S {
-            let e = dexp(kind, j);
-            d += seg.alpha[j] * p.d0[j];
-            v += seg.alpha[j] * e * p.d1[j];
-            dd += seg.alpha[j] * e * (e - 1.0) * p.d2[j];
-        }
-        v /= h;
-        dd /= h * h;
+        let (d, v, dd) = seg_poly(seg, &p);
+        let (v, dd) = (v / h, dd / (h * h));
         let mut w = 0.0;
         if with_w {
             w = match kind {
@@ -1150,7 +1147,6 @@ impl Solver {
         let mut f = [0.0; S];
         let mut d1 = [0.0; S];
         let mut roots = [Root::default(); S];
-        let a_norm = linalg::norm_inf(&b.a);
         let mut prev = f64::INFINITY;
         let mut converged = false;
         for it in 0..=FAST_NEWTON_MAX_ITER {
@@ -1214,7 +1210,7 @@ impl Solver {
                 rem = rem.max(0.5 * K16 * (w2 * r.g + w1 * r.gt) * dt * dt);
             }
             converged = newton_done(dmax, scale, prev, self.rtol)
-                || next_correction_done(h2 * a_norm * rem, scale, self.rtol);
+                || next_correction_done(h2 * b.a_norm * rem, scale, self.rtol);
             prev = dmax;
             if converged {
                 // the last correction is at the accuracy floor: move the forces to first order
@@ -1264,16 +1260,12 @@ impl Solver {
         // step end from the last node (θ = 1)
         let mut end = Pt {
             d: dfix[S - 1] + z[S - 1],
-            v: vh,
+            v: seg_poly(&seg, &powers(Kind::Regular, 1.0)).1 / h,
             dd: 0.0,
             w: 0.0,
             q: [0.0; KMAX],
             s: [0.0; KMAX],
         };
-        for j in 0..S {
-            end.v += seg.alpha[j] * dexp(Kind::Regular, j);
-        }
-        end.v /= h;
         for k in 0..self.k {
             let mut acc = sfix[k][S - 1];
             for j in 0..S {
@@ -1348,27 +1340,24 @@ impl Solver {
     }
 }
 
-/// `d` of a step's polynomial at `θ` (any `θ >= 0`, also beyond the step for prediction).
-fn seg_d(seg: &Seg, th: f64) -> f64 {
-    let p = powers(seg.kind, th);
-    let mut d = seg.dn + seg.vh * th;
-    for j in 0..S {
-        d += seg.alpha[j] * p.d0[j];
-    }
-    d
-}
-
-/// `(dd/dθ, d²d/dθ²)` of a step's polynomial at `θ` (per unit `θ`, not per unit time).
-fn seg_rates(seg: &Seg, th: f64) -> (f64, f64) {
-    let p = powers(seg.kind, th);
+/// `(d, dd/dθ, d²d/dθ²)` of a step's polynomial at `θ` from its powers (any `θ >= 0`, also
+/// beyond the step for prediction; derivatives per unit `θ`, not per unit time).
+fn seg_poly(seg: &Seg, p: &Powers) -> (f64, f64, f64) {
+    let mut d = seg.dn + seg.vh * p.th;
     let mut v = seg.vh;
     let mut a = 0.0;
     for j in 0..S {
         let e = dexp(seg.kind, j);
+        d += seg.alpha[j] * p.d0[j];
         v += seg.alpha[j] * e * p.d1[j];
         a += seg.alpha[j] * e * (e - 1.0) * p.d2[j];
     }
-    (v, a)
+    (d, v, a)
+}
+
+/// `d` of a step's polynomial at `θ` (see [`seg_poly`]).
+fn seg_d(seg: &Seg, th: f64) -> f64 {
+    seg_poly(seg, &powers(seg.kind, th)).0
 }
 
 /// `max(x, 0)^(3/2)`.
@@ -1772,7 +1761,7 @@ fn run(s: &mut Solver, rtol: f64, factor: f64, history: bool) -> Result<Outcome>
         // (the polynomial alone: the hereditary integrals once, at the root)
         let (mut lo, mut hi) = (0.0, 1.0);
         let mut th = 0.5;
-        let (mut vt, mut at) = seg_rates(&seg, th);
+        let (_, mut vt, mut at) = seg_poly(&seg, &powers(seg.kind, th));
         for it in 0..=tolerances::ROOT_MAX_ITER {
             if it == tolerances::ROOT_MAX_ITER {
                 return Err(Error::NoConvergence {
@@ -1793,7 +1782,7 @@ fn run(s: &mut Solver, rtol: f64, factor: f64, history: bool) -> Result<Outcome>
             };
             let done = (next - th).abs() <= 1e-15 || hi - lo <= 1e-15;
             th = next;
-            (vt, at) = seg_rates(&seg, th);
+            (_, vt, at) = seg_poly(&seg, &powers(seg.kind, th));
             if done {
                 break;
             }
