@@ -138,8 +138,8 @@ fn work_is_pinned() {
         (PINNED_STEPS, PINNED_EVALUATIONS)
     );
 }
-const PINNED_STEPS: u64 = 16;
-const PINNED_EVALUATIONS: u64 = 155;
+const PINNED_STEPS: u64 = 12;
+const PINNED_EVALUATIONS: u64 = 147;
 
 #[test]
 fn errors_are_reported() {

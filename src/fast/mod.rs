@@ -32,9 +32,15 @@
 //! Each step is a small Newton solve on the node values of `d`; in restitution each node
 //! also solves for `t_1` on the dense, exact-in-the-kernel output of the compression phase.
 //! Step sizes are chosen from the defect of the collocation polynomial at a point between the
-//! nodes (error per step `<= 0.1 rtol`; on the first step also inside the initial relaxation
-//! layer of every term with `tau_k` below the first node, which the probe point cannot see:
-//! without it rtol 1e-9 was missed by 2.8x where `h / tau = 200`); a retry after a rejection
+//! nodes. The velocity error allowed per step is [`FAST_TOL_FACTOR`]` rtol E`, with `E` the
+//! mechanical energy left relative to the impact energy (`E = v^2 + (4/5) F d` in canonical
+//! units, [`tol_scale`]): 1 at the start, `e^2` at the end of contact. A fixed absolute
+//! tolerance would ask the same of every row while the request is relative to `e`, and errors
+//! made while little energy is left weigh most in the final velocity; with the energy scale
+//! every CoR down to 5.5e-4 is within `rtol` in one solve (the version before solved a CoR below
+//! 0.05 twice). The first step, which holds the initial relaxation layer of every term with
+//! `tau_k` below the first node (where the probe point cannot see: its estimate also probes
+//! the layer), runs at [`FAST_FIRST_STEP_FACTOR`] of that. A retry after a rejection
 //! uses the order observed between the failed attempts. The end of compression (`v = 0`) is
 //! found on the step polynomial. Near the end of contact the force vanishes like `(t_end - t)^(3/2)`, so the
 //! defect of a step grows like `h^(S+1) (δ + κ h)^(-7/2)` with the distance `δ` of its end from
@@ -43,27 +49,30 @@
 //! step just accepted, and the last one is planned to reach `t_1 = 0` (then fitted to end
 //! there). Newton stops after one correction when an estimate of the next one (compression: a
 //! bound from the second derivative of `d^(3/2)`; restitution: the second-order remainder at
-//! each Ting root from `w''` and `dG_eq/dt_1`) is below its stop level. The step control
-//! bounds absolute velocity errors; a CoR below [`FAST_SMALL_COR`] is therefore solved a second
-//! time with the tolerance scaled by `e / FAST_SMALL_COR`.
+//! each Ting root from `w''` and `dG_eq/dt_1`) is below its stop level. A CoR below
+//! [`FAST_SMALL_COR`] found at a request looser than [`FAST_SMALL_COR_MAX_RTOL`] is solved
+//! again at that rtol (long loose steps miss it).
 //!
 //! # Accuracy and cost (measured 2026-11-22, release build, one core, shared machine)
 //! Against the independent Python reference tables (765 groups: the 660-row grid and random
 //! set, `nu ∈ [-0.9, 0.5]`, `p2 ∈ [1e-4, 1e2]`, `p3 ∈ [1e-3, 1e4]`, and 105 rows in the most
 //! dissipative corner, CoR down to 5.5e-4; reference error <= 1.1e-12): max relative CoR error
-//! 2.8e-7 at `rtol = 1e-6` and 6.0e-11 at `rtol = 1e-10`, and within `rtol` on every row for
-//! every `rtol` from 1e-2 to 1e-10 (`tests/external_reference.rs` checks 1e-4, 1e-6, 1e-8 and
-//! 1e-10 on every row). Below that, rounding (about 1e-12 absolute in the velocity) limits the
-//! relative accuracy of small CoRs (1.7e-11 at `rtol = 1e-11` for `e = 0.088`). On 5000 random
-//! groups over the range against the reference solver: 3.9e-7 at `rtol = 1e-6`. Against the
-//! brute-force integration in `tests/fast_independent.rs`: 5e-11 at `rtol = 1e-8`.
-//! Cost on the 660-row table (`tests/fast_xcheck.rs`, ignored): about 22 and 88 steps on
-//! average at `rtol = 1e-6` and `1e-10` (`mdr-impact bench` times them per group of rows).
+//! 7.8e-7 at `rtol = 1e-6` and 1.9e-10 at `rtol = 1e-10` (the bound there is 1e-9);
+//! within `rtol` on every row for every `rtol` from 1e-2 to 1e-9 (`tests/external_reference.rs`
+//! checks 1e-4, 1e-6, 1e-8 and 1e-10 on every row). At 1e-10 and below, rounding (about 1e-12
+//! absolute in the velocity) limits the relative accuracy of small CoRs (1.9e-10 for
+//! `e = 0.041` at 1e-10, 1.6e-11 at 1e-11). On 5000 random groups over the range against the
+//! reference solver: 6.5e-7 at `rtol = 1e-6`. Against the brute-force integration in
+//! `tests/fast_independent.rs`: 5e-11 at `rtol = 1e-8`. `rtol` governs the CoR; the contact
+//! time, located where the force vanishes like `(t_end - t)^(3/2)`, is less accurate (at most
+//! 1.0e-5 at `rtol = 1e-6` and 3.8e-9 at 1e-10 on the external tables, `mdr-impact validate`).
+//! Cost on the 765 external rows (`tests/fast_xcheck.rs`, ignored): 18.3 and 72 steps on
+//! average at `rtol = 1e-6` and `1e-10` (26.9 and about 100 with the absolute tolerance and
+//! second solves before), 280 M instructions for all rows at 1e-6 (369 M before).
 //! The largest shares are the Ting roots of the restitution (dense evaluations of the
 //! compression history), the exact kernels (`exp`, `Ĵ`) and the 5x5 Newton solves. The error
-//! estimate is conservative by a factor 4 to a few hundred (median ~200 on 5000 random
-//! groups) and least so for small CoRs, whose relative error it bounds least well; hence the
-//! first solve runs at [`FAST_FIRST_TOL_FACTOR`] and a small CoR is solved again, tighter.
+//! estimate (`cor_error_estimate`) is 13x to a few thousand times the actual error (median
+//! about 750 at 1e-6), never below it on those rows.
 //!
 //! Independent of [`crate::mdr`] and [`crate::theory`]; shares only [`Prony`] with them.
 
@@ -91,28 +100,19 @@ pub const FAST_MAX_STEPS: u64 = 20_000;
 pub const FAST_NEWTON_MAX_ITER: usize = 40;
 /// Safety factor of the one-correction Newton stop (`quadratic_done`).
 pub const FAST_QUADRATIC_SAFETY: f64 = 10.0;
-/// A first solve with a CoR below this value is repeated with the step tolerance
-/// [`FAST_LOCAL_TOL_FACTOR`]` rtol` scaled by `e / FAST_SMALL_COR` (at least
-/// [`FAST_MIN_TOL_SCALE`]): the step control bounds absolute velocity errors, the request is
-/// relative to `e`. Calibrated on 5000 random groups over the paper's range against the
-/// reference solver (errors up to 4e-6 at `rtol = 1e-6` for `e ~ 1e-3` without the second
-/// solve) and on the external tables.
+/// Local error tolerance per step (velocity, in units of `v0`), as a multiple of `rtol` times
+/// the energy scale of [`tol_scale`].
+pub const FAST_TOL_FACTOR: f64 = 2.0;
+/// The first step's tolerance, as a fraction of the others'.
+pub const FAST_FIRST_STEP_FACTOR: f64 = 0.1;
+/// A CoR below this value, found at a request looser than [`FAST_SMALL_COR_MAX_RTOL`], is
+/// solved again at that rtol (measured on the external tables: at rtol 1e-4 the CoR 8.3e-4
+/// was off by 4.4e-4 relative, at 1e-2 by 1.05e-2; at 1e-5 and 1e-6 all rows are within rtol).
 pub const FAST_SMALL_COR: f64 = 0.05;
-/// Local error tolerance per step of the first solve, as a fraction of `rtol`: errors relative
-/// to `e` are largest for small `e`, which the second solve covers, so the first one can be
-/// looser than [`FAST_LOCAL_TOL_FACTOR`] (0.3 with `FAST_SMALL_COR = 0.05`: max 3.9e-7 at
-/// `rtol = 1e-6` on 5000 random groups and 2.8e-7 on the external tables, 7% fewer steps;
-/// 0.5 missed 1e-6 by 1.8x on the random set, with the second solve below 0.02).
-pub const FAST_FIRST_TOL_FACTOR: f64 = 0.3;
-/// The second solve of a small CoR is not looser than this `rtol` (times the scale): at looser
-/// requests its steps are too long for the error estimate to hold there (measured on the
-/// external corner table: rtol 1e-4 with the scale alone missed by 6.3x for e = 9.2e-4).
+/// See [`FAST_SMALL_COR`].
 pub const FAST_SMALL_COR_MAX_RTOL: f64 = 1e-6;
-/// Smallest tolerance scale of the second solve of a small CoR.
-pub const FAST_MIN_TOL_SCALE: f64 = 0.01;
-/// Local error tolerance per step of the second solve of a small CoR, as a fraction of its
-/// `rtol`.
-pub const FAST_LOCAL_TOL_FACTOR: f64 = 0.1;
+/// Smallest energy scale of the step tolerance.
+pub const FAST_MIN_TOL_SCALE: f64 = 1e-3;
 /// Width of the initial relaxation layer of a stiff term, in units of its `tau`, in the
 /// first step's error estimate.
 pub const FAST_LAYER_WIDTH: f64 = 3.0;
@@ -1545,11 +1545,11 @@ fn step_factor(ratio: f64) -> f64 {
 /// [`crate::tolerances`]); `history` asks for `(t, d, v, F, a)` at the step ends. The outcome
 /// is canonical: `rebound_velocity = cor`, `dissipated_energy = (1 - e^2)/2`,
 /// `max_contact_radius = sqrt(d_max)`, solver `"fast"`. `cor_error_estimate` is the sum of the
-/// accepted local error estimates divided by `e` (4x to a few hundred times the actual error
-/// on 5000 random groups, never below it); `max_force` is the largest node force, refined by
-/// a parabola through its neighbours; `work.steps` counts attempted steps and
-/// `work.evaluations` force and history evaluations, of both solves when a CoR below
-/// [`FAST_SMALL_COR`] is solved again (`work.levels` is then 2).
+/// accepted local error estimates divided by `e` (13x to a few thousand times the actual
+/// error on the external tables, never below it); `max_force` is the largest node force,
+/// refined by a parabola through its neighbours; `work.steps` counts attempted steps and
+/// `work.evaluations` force and history evaluations, of both solves when a small CoR is solved
+/// again at a loose request (see [`FAST_SMALL_COR`]; `work.levels` is then 2).
 ///
 /// Elastic input (no Prony terms) is answered in closed form (Hertz, theory notes §6):
 /// `k = (16/3) c_inf`, `d_max = (5/(4k))^(2/5)`, `t_c = 2.9432751843247047 d_max`, `e = 1`.
@@ -1623,41 +1623,48 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
         return Ok(hertz(c_inf, history));
     }
     let glassy = c_inf + c[..k].iter().sum::<f64>();
-    let solve = |tol_rtol: f64, factor: f64| {
-        let mut s = Solver {
-            rtol: tol_rtol,
-            accept_step: 0.0,
-            c_inf,
-            c,
-            tau,
-            k,
-            glassy,
-            tab: tables(),
-            comp: Vec::with_capacity(64),
-            dense: Vec::new(),
-            coef: Vec::new(),
-            dense_ok: Vec::new(),
-            t_m: 0.0,
-            evaluations: 0,
-            last_seg: 0,
-        };
-        run(&mut s, tol_rtol, factor, history)
+    let mut s = Solver {
+        rtol,
+        accept_step: 0.0,
+        c_inf,
+        c,
+        tau,
+        k,
+        glassy,
+        tab: tables(),
+        comp: Vec::with_capacity(64),
+        dense: Vec::new(),
+        coef: Vec::new(),
+        dense_ok: Vec::new(),
+        t_m: 0.0,
+        evaluations: 0,
+        last_seg: 0,
     };
-    let first = solve(rtol, FAST_FIRST_TOL_FACTOR)?;
-    if first.cor >= FAST_SMALL_COR {
-        return Ok(first);
+    let turn = compress(&mut s, rtol, history)?;
+    let mut out = restitute(&mut s, turn, rtol)?;
+    if out.cor < FAST_SMALL_COR && rtol > FAST_SMALL_COR_MAX_RTOL {
+        // long steps of a loose request miss a small CoR (the error estimate does not hold
+        // there): solve again at the largest rtol measured to hold
+        let first_steps = out.work.steps;
+        let turn = compress(&mut s, FAST_SMALL_COR_MAX_RTOL, history)?;
+        out = restitute(&mut s, turn, FAST_SMALL_COR_MAX_RTOL)?;
+        out.work.steps += first_steps;
+        out.work.levels = 2;
     }
-    // The step control bounds absolute errors of the velocity; a small CoR needs them smaller
-    // by about e / FAST_SMALL_COR for the same relative accuracy: solve again, tighter.
-    let scale = (first.cor / FAST_SMALL_COR).max(FAST_MIN_TOL_SCALE);
-    let mut second = solve(
-        rtol.min(FAST_SMALL_COR_MAX_RTOL) * scale,
-        FAST_LOCAL_TOL_FACTOR,
-    )?;
-    second.work.steps += first.work.steps;
-    second.work.evaluations += first.work.evaluations;
-    second.work.levels += first.work.levels;
-    Ok(second)
+    out.work.evaluations = s.evaluations;
+    Ok(out)
+}
+
+/// Scale of the step tolerance at a step start: the mechanical energy left, relative to the
+/// impact energy, `E = v^2 + (4/5) F d` (kinetic, plus the Hertz energy `(2/5) F d` of the
+/// current force and indentation; canonical units `m = v0 = 1`), at least
+/// [`FAST_MIN_TOL_SCALE`]. `E = 1` at the start and `e^2` at the end of contact.
+fn tol_scale(v: f64, f: f64, d: f64) -> f64 {
+    let e = v * v + 0.8 * f * d;
+    if e.is_nan() {
+        return 1.0; // a non-finite state is reported by the caller
+    }
+    e.clamp(FAST_MIN_TOL_SCALE, 1.0)
 }
 
 /// Elastic closed form (theory notes §6) in canonical units.
@@ -1687,8 +1694,30 @@ fn hertz(c_inf: f64, history: bool) -> Outcome {
     }
 }
 
-fn run(s: &mut Solver, rtol: f64, factor: f64, history: bool) -> Result<Outcome> {
-    let tol = rtol * factor;
+/// The compression phase of one pass: the state at the time of maximum indentation `t_m`.
+struct Turn {
+    t_m: f64,
+    d_m: f64,
+    v_m: f64,
+    s_m: [f64; KMAX],
+    f_m: f64,
+    /// Length of the first restitution step.
+    h: f64,
+    steps: u64,
+    err_sum: f64,
+    hist: Option<History>,
+    peak: PeakTracker,
+}
+
+/// Compression phase (`0 <= t <= t_m`) with the per-step velocity tolerance `prec * factor`
+/// (`prec` also sets the Newton stops); the first step at [`FAST_FIRST_STEP_FACTOR`] of it.
+/// Leaves the dense compression output in `s`.
+fn compress(s: &mut Solver, prec: f64, history: bool) -> Result<Turn> {
+    let tol = prec * FAST_TOL_FACTOR;
+    let rtol = prec;
+    s.rtol = prec;
+    s.comp.clear();
+    s.last_seg = 0;
     let mut hist = history.then(History::default);
     if let Some(hh) = hist.as_mut() {
         hh.push(0.0, 0.0, 1.0, 0.0, 0.0);
@@ -1729,7 +1758,13 @@ fn run(s: &mut Solver, rtol: f64, factor: f64, history: bool) -> Result<Outcome>
             }
             Err(e) => return Err(e),
         };
-        let ratio = out.err / tol;
+        // the first step is one step: a tighter tolerance there costs little and covers the
+        // initial relaxation layers, where the error estimate is least conservative
+        let step_tol = match kind {
+            Kind::First => tol * FAST_FIRST_STEP_FACTOR,
+            Kind::Regular => tol,
+        } * tol_scale(v, f_n, d);
+        let ratio = out.err / step_tol;
         if !(ratio <= 1.0) {
             h = retry.next(h, ratio);
             continue;
@@ -1808,10 +1843,40 @@ fn run(s: &mut Solver, rtol: f64, factor: f64, history: bool) -> Result<Outcome>
         break;
     }
     s.t_m = t_m;
-    s.accept_step = (1e-4 * rtol).sqrt().min(1e-4) * t_m;
     s.build_dense();
+    Ok(Turn {
+        t_m,
+        d_m,
+        v_m,
+        s_m,
+        f_m,
+        h,
+        steps,
+        err_sum,
+        hist,
+        peak,
+    })
+}
 
-    // ---- restitution
+/// Restitution phase (`t_m < t <= t_end`) after `turn`, with the per-step velocity tolerance
+/// `prec * factor`, on the dense compression output left in `s` by [`compress`].
+fn restitute(s: &mut Solver, turn: Turn, prec: f64) -> Result<Outcome> {
+    let tol = prec * FAST_TOL_FACTOR;
+    s.rtol = prec;
+    let Turn {
+        t_m,
+        d_m,
+        v_m,
+        s_m,
+        f_m,
+        mut h,
+        mut steps,
+        mut err_sum,
+        mut hist,
+        mut peak,
+    } = turn;
+    s.accept_step = (1e-4 * prec).sqrt().min(1e-4) * t_m;
+    let mut retry = Retry::default();
     let (mut t, mut d, mut v, mut f_n) = (t_m, d_m, v_m, f_m);
     let mut sk = s_m;
     // t_1 at the last three nodes (None: mirror image of the elastic case, t_1 = 2 t_m - t)
@@ -1857,7 +1922,7 @@ fn run(s: &mut Solver, rtol: f64, factor: f64, history: bool) -> Result<Outcome>
             }
             Err(e) => return Err(e),
         };
-        let ratio = out.err / tol;
+        let ratio = out.err / (tol * tol_scale(v, f_n, d));
         let seg = out.seg;
         let end = out.end;
         let mut g1 = s.c_inf * end.d;
