@@ -139,7 +139,7 @@ fn work_is_pinned() {
     );
 }
 const PINNED_STEPS: u64 = 12;
-const PINNED_EVALUATIONS: u64 = 147;
+const PINNED_EVALUATIONS: u64 = 140;
 
 #[test]
 fn errors_are_reported() {

@@ -7,7 +7,9 @@
 pub(crate) type Mat<const N: usize> = [[f64; N]; N];
 
 /// Solve `m x = b` by Gaussian elimination with partial pivoting; `None` if singular.
+/// The reciprocal pivots are kept for the back substitution (one division per column).
 pub(crate) fn solve<const N: usize>(mut m: Mat<N>, mut b: [f64; N]) -> Option<[f64; N]> {
+    let mut inv = [0.0; N];
     for col in 0..N {
         let mut p = col;
         let mut best = m[col][col].abs();
@@ -26,24 +28,26 @@ pub(crate) fn solve<const N: usize>(mut m: Mat<N>, mut b: [f64; N]) -> Option<[f
             b.swap(col, p);
         }
         let pivot = m[col];
-        let inv = 1.0 / pivot[col];
+        inv[col] = 1.0 / pivot[col];
         let bc = b[col];
         for r in col + 1..N {
-            let f = m[r][col] * inv;
-            let row = &mut m[r];
-            for c in col + 1..N {
-                row[c] -= f * pivot[c];
+            let f = m[r][col] * inv[col];
+            // all columns: those left of `col` are never read again, and a fixed trip count
+            // lets the compiler unroll and vectorise
+            for (x, p) in m[r].iter_mut().zip(&pivot) {
+                *x -= f * p;
             }
             b[r] -= f * bc;
         }
     }
+    // back substitution over full rows: the x not yet computed are still 0
     let mut x = [0.0; N];
     for r in (0..N).rev() {
         let mut s = b[r];
-        for c in r + 1..N {
-            s -= m[r][c] * x[c];
+        for (mc, xc) in m[r].iter().zip(&x) {
+            s -= mc * xc;
         }
-        x[r] = s / m[r][r];
+        x[r] = s * inv[r];
     }
     Some(x)
 }

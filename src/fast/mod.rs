@@ -585,6 +585,8 @@ struct Root {
     g: f64,
     /// `dG_eq(t - t_1)/dt_1 = Σ c_k exp(-(t - t_1)/tau_k) / tau_k`.
     gt: f64,
+    /// Compression force at `t_1`, `-d''(t_1)`.
+    fc: f64,
 }
 
 /// One converged compression or restitution step.
@@ -1031,12 +1033,14 @@ impl Solver {
             let mut g = self.c_inf;
             let mut gt = 0.0;
             let mut f = self.c_inf * pt.w;
+            let mut fc = f;
             for k in 0..self.k {
                 let ek = kernel::exp_neg((t - x) / self.tau[k]);
                 phi += self.c[k] * (s[k] - ek * pt.s[k]);
                 g += self.c[k] * ek;
                 gt += self.c[k] * ek / self.tau[k];
                 f += self.c[k] * ek * pt.q[k];
+                fc += self.c[k] * pt.q[k];
             }
             let dphi = -pt.v * g;
             let root = |t1: f64, f: f64, d1: f64| Root {
@@ -1046,6 +1050,7 @@ impl Solver {
                 v1: pt.v,
                 g,
                 gt,
+                fc: K16 * fc,
             };
             if phi > 0.0 {
                 lo = x;
@@ -1192,10 +1197,22 @@ impl Solver {
             if !dmax.is_finite() {
                 break;
             }
+            // move the guesses of t_1 with the correction to first order:
+            // dΦ_i = Σ_j (c_inf δ_ij + Σ_k c_k N^k_ij) δ_j and dΦ/dt_1 = -d'(t_1) G_eq
+            for i in 0..S {
+                let r = &roots[i];
+                if r.t1 > 0.0 && r.v1 > 0.0 && r.g > 0.0 {
+                    let mut dphi = self.c_inf * delta[i];
+                    for j in 0..S {
+                        dphi += cn[i][j] * delta[j];
+                    }
+                    t1[i] = r.t1 + dphi / (r.v1 * r.g);
+                }
+            }
             // second-order remainder of the forces after this correction, node by node:
             // it moves t_1 by dt = dF / (dF/dt_1), dF/dt_1 = (16/3) w'(t_1) G_eq, and
             // F'' = (16/3) [w''(t_1) G_eq + w'(t_1) dG_eq/dt_1] (w = d^(3/2); w'' from
-            // d'' = -F >= -F_glassy); the next correction is about h^2 |A| F'' dt^2 / 2
+            // d''(t_1) = -F_comp(t_1)); the next correction is about h^2 |A| F'' dt^2 / 2
             let df = linalg::mul_vec(&jf, &delta);
             let mut rem: f64 = 0.0;
             for i in 0..S {
@@ -1205,7 +1222,7 @@ impl Solver {
                 }
                 let sd = r.d1.sqrt();
                 let w1 = 1.5 * sd * r.v1;
-                let w2 = 0.75 * r.v1 * r.v1 / sd + 1.5 * sd * K16 * self.glassy * r.d1 * sd;
+                let w2 = 0.75 * r.v1 * r.v1 / sd + 1.5 * sd * r.fc.abs();
                 let dt = df[i] / (K16 * w1 * r.g);
                 rem = rem.max(0.5 * K16 * (w2 * r.g + w1 * r.gt) * dt * dt);
             }
