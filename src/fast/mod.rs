@@ -560,6 +560,8 @@ struct Solver {
     c_inf: f64,
     c: [f64; KMAX],
     tau: [f64; KMAX],
+    /// `1 / tau_k` (the Ting roots multiply by it).
+    inv_tau: [f64; KMAX],
     k: usize,
     glassy: f64,
     tab: &'static Tables,
@@ -667,7 +669,8 @@ impl Solver {
         };
         self.last_seg = i;
         let seg = &self.comp[i];
-        let th = ((t1 - seg.t0) / seg.h).max(0.0);
+        let inv_h = 1.0 / seg.h;
+        let th = ((t1 - seg.t0) * inv_h).max(0.0);
         if self.dense.len() <= i * self.k || !self.dense_ok[i] {
             return self.eval_seg(seg, th, true);
         }
@@ -690,7 +693,7 @@ impl Solver {
             }
             return Pt {
                 d,
-                v: v / seg.h,
+                v: v * inv_h,
                 dd: 0.0,
                 w: pow15(d),
                 q,
@@ -705,7 +708,7 @@ impl Solver {
             dv = dv * th + (j + 2) as f64 * seg.alpha[j];
         }
         let d = seg.dn + th * (seg.vh + th * d);
-        let v = (seg.vh + th * dv) / seg.h;
+        let v = (seg.vh + th * dv) * inv_h;
         let mut q = [0.0; KMAX];
         let mut s = [0.0; KMAX];
         for k in 0..self.k {
@@ -1035,10 +1038,10 @@ impl Solver {
             let mut f = self.c_inf * pt.w;
             let mut fc = f;
             for k in 0..self.k {
-                let ek = kernel::exp_neg((t - x) / self.tau[k]);
+                let ek = kernel::exp_neg((t - x) * self.inv_tau[k]);
                 phi += self.c[k] * (s[k] - ek * pt.s[k]);
                 g += self.c[k] * ek;
-                gt += self.c[k] * ek / self.tau[k];
+                gt += self.c[k] * ek * self.inv_tau[k];
                 f += self.c[k] * ek * pt.q[k];
                 fc += self.c[k] * pt.q[k];
             }
@@ -1646,6 +1649,7 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
         c_inf,
         c,
         tau,
+        inv_tau: std::array::from_fn(|j| if j < k { 1.0 / tau[j] } else { 0.0 }),
         k,
         glassy,
         tab: tables(),
