@@ -129,6 +129,53 @@ fn converges_in_rtol() {
     }
 }
 
+/// Groups and tolerances at which a single-point error estimate once sat near a zero of the
+/// defect in a relaxation layer (first compression step, first restitution step) and `fast`
+/// missed `rtol` by 2x to 7x; against the reference solver at 1e-11.
+#[test]
+fn layer_probe_rows() {
+    for (nu, p2, p3, rtol) in [
+        (
+            -0.2800248125248779,
+            0.00012948790589688365,
+            1.2046874518105941,
+            1e-8,
+        ),
+        (
+            -0.08485602139987747,
+            0.8200493469994382,
+            0.012056446573550683,
+            1e-10,
+        ),
+        (
+            0.49807312444536506,
+            0.00014889154114890323,
+            29.23479972329919,
+            1e-8,
+        ),
+        (
+            0.44628259242548524,
+            0.0007791065954636064,
+            3.339158893020134,
+            1e-8,
+        ),
+        (
+            0.3322928706469554,
+            0.00010087067533641464,
+            12.576485074748385,
+            1e-9,
+        ),
+    ] {
+        let prony = canonical(nu, p2, p3);
+        let reference = mdr_impact::theory::reference::impact(&prony, 1e-11, false)
+            .unwrap()
+            .cor;
+        let cor = fast::impact(&prony, rtol, false).unwrap().cor;
+        let err = ((cor - reference) / reference).abs();
+        assert!(err <= rtol, "({nu}, {p2}, {p3}) rtol {rtol:e}: {err:.2e}");
+    }
+}
+
 /// Work counters of one solve, pinned so that a change in work is noticed.
 #[test]
 fn work_is_pinned() {
