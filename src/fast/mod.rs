@@ -34,7 +34,8 @@
 //! Step sizes are chosen from the defect of the collocation polynomial at a point between the
 //! nodes. The velocity error allowed per step is [`FAST_TOL_FACTOR`]` rtol E`, with `E` the
 //! mechanical energy left relative to the impact energy (`E = v^2 + (4/5) F d` in canonical
-//! units, [`tol_scale`]): 1 at the start, `e^2` at the end of contact. A fixed absolute
+//! units, [`tol_scale`]): 1 at the start, `e^2` at the end of contact; in restitution at least
+//! `|v|` ([`rest_tol_scale`]), since an error there passes to the rebound velocity. A fixed absolute
 //! tolerance would ask the same of every row while the request is relative to `e`, and errors
 //! made while little energy is left weigh most in the final velocity; with the energy scale
 //! every CoR down to 5.5e-4 is within `rtol` in one solve (the version before solved a CoR below
@@ -1743,6 +1744,14 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
 /// impact energy, `E = v^2 + (4/5) F d` (kinetic, plus the Hertz energy `(2/5) F d` of the
 /// current force and indentation; canonical units `m = v0 = 1`), at least
 /// [`FAST_MIN_TOL_SCALE`]. `E = 1` at the start and `e^2` at the end of contact.
+/// [`tol_scale`] in restitution, at least `|v|`: an error of the velocity near the end of
+/// contact passes to the rebound velocity unchanged, so it needs to be small relative to `e`
+/// (about `|v|` there), not to `e^2` (5000 random groups at rtol 1e-6: 35.9 instead of 37.7
+/// steps for `e < 0.01`, 29.8 instead of 32.1 for `0.01 <= e < 0.05`, same maximum error).
+fn rest_tol_scale(v: f64, f: f64, d: f64) -> f64 {
+    tol_scale(v, f, d).max(v.abs().min(1.0))
+}
+
 fn tol_scale(v: f64, f: f64, d: f64) -> f64 {
     let e = v * v + 0.8 * f * d;
     if e.is_nan() {
@@ -2012,7 +2021,7 @@ fn restitute(s: &mut Solver, turn: Turn, prec: f64) -> Result<Outcome> {
             }
             Err(e) => return Err(e),
         };
-        let ratio = out.err / (tol * tol_scale(v, f_n, d));
+        let ratio = out.err / (tol * rest_tol_scale(v, f_n, d));
         let seg = out.seg;
         let end = out.end;
         let mut g1 = s.c_inf * end.d;
