@@ -34,15 +34,15 @@
 //! Step sizes are chosen from the defect of the collocation polynomial at a point between the
 //! nodes. The velocity error allowed per step is [`FAST_TOL_FACTOR`]` rtol E`, with `E` the
 //! mechanical energy left relative to the impact energy (`E = v^2 + (4/5) F d` in canonical
-//! units, [`tol_scale`]): 1 at the start, `e^2` at the end of contact; in restitution at least
-//! `|v|` ([`rest_tol_scale`]), since an error there passes to the rebound velocity. A fixed absolute
+//! units, `tol_scale`): 1 at the start, `e^2` at the end of contact; in restitution at least
+//! `|v|` (`rest_tol_scale`), since an error there passes to the rebound velocity. A fixed absolute
 //! tolerance would ask the same of every row while the request is relative to `e`, and errors
 //! made while little energy is left weigh most in the final velocity; with the energy scale
 //! every CoR down to 5.5e-4 is within `rtol` in one solve (the version before solved a CoR below
 //! 0.05 twice). The first step, which holds the initial relaxation layer of every term with
 //! `tau_k` below the second node (where the probe point cannot see: its estimate also probes
 //! the layer), runs at [`FAST_FIRST_STEP_FACTOR`] of that. In compression, the mismatch between
-//! `w` and `d^(3/2)` enters the estimate through [`Solver::effective_modulus`], not the glassy
+//! `w` and `d^(3/2)` enters the estimate through `Solver::effective_modulus`, not the glassy
 //! modulus (a stiff term responds to it through `tau_k w'` only). The first step's estimate
 //! is the largest defect at the middle of every gap between its nodes, and the first
 //! restitution step also probes the layer of width `tau_k / 2` after `t_m` that the Ting factor
@@ -107,7 +107,7 @@ pub const FAST_NEWTON_MAX_ITER: usize = 40;
 /// Safety factor of the one-correction Newton stop (`quadratic_done`).
 pub const FAST_QUADRATIC_SAFETY: f64 = 10.0;
 /// Local error tolerance per step (velocity, in units of `v0`), as a multiple of `rtol` times
-/// the energy scale of [`tol_scale`].
+/// the energy scale of `tol_scale`.
 pub const FAST_TOL_FACTOR: f64 = 2.0;
 /// The first step's tolerance, as a fraction of the others'.
 pub const FAST_FIRST_STEP_FACTOR: f64 = 0.1;
@@ -1744,7 +1744,7 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
 /// impact energy, `E = v^2 + (4/5) F d` (kinetic, plus the Hertz energy `(2/5) F d` of the
 /// current force and indentation; canonical units `m = v0 = 1`), at least
 /// [`FAST_MIN_TOL_SCALE`]. `E = 1` at the start and `e^2` at the end of contact.
-/// [`tol_scale`] in restitution, at least `|v|`: an error of the velocity near the end of
+/// `tol_scale` in restitution, at least `|v|`: an error of the velocity near the end of
 /// contact passes to the rebound velocity unchanged, so it needs to be small relative to `e`
 /// (about `|v|` there), not to `e^2` (5000 random groups at rtol 1e-6: 35.9 instead of 37.7
 /// steps for `e < 0.01`, 29.8 instead of 32.1 for `0.01 <= e < 0.05`, same maximum error).
