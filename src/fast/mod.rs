@@ -64,21 +64,22 @@
 //! Against the independent Python reference tables (765 groups: the 660-row grid and random
 //! set, `nu ∈ [-0.9, 0.5]`, `p2 ∈ [1e-4, 1e2]`, `p3 ∈ [1e-3, 1e4]`, and 105 rows in the most
 //! dissipative corner, CoR down to 5.5e-4; reference error <= 1.1e-12): max relative CoR error
-//! 7.8e-7 at `rtol = 1e-6` and 3.8e-11 at `rtol = 1e-10`, within `rtol` on every row for every
+//! 7.8e-7 at `rtol = 1e-6` and 5.6e-11 at `rtol = 1e-10`, within `rtol` on every row for every
 //! `rtol` from 1e-2 to 1e-11 (`tests/external_reference.rs` checks 1e-4, 1e-6, 1e-8 and 1e-10
 //! on every row). On 5000 random groups over the range against the reference solver: within
-//! `rtol` from 1e-6 to 1e-9 (6.5e-7 at 1e-6, 5.9e-9 at 1e-8), 4.4e-10 at 1e-10 (that reference
-//! is good to about 1e-10 for the smallest CoRs). Against the brute-force integration in
-//! `tests/fast_independent.rs`: 5e-11 at `rtol = 1e-8`. `rtol` governs the CoR; the contact
-//! time, located where the force vanishes like `(t_end - t)^(3/2)`, is less accurate (at most
-//! 1.0e-5 at `rtol = 1e-6` and 2.2e-10 at 1e-10 on the external tables, `mdr-impact validate`).
-//! Cost on the 765 external rows (`tests/fast_xcheck.rs`, ignored): 18.1 and 71 steps on
+//! `rtol` from 1e-6 to 1e-9 (6.7e-7 at 1e-6, 5.5e-9 at 1e-8, 7.2e-10 at 1e-9), 4.9e-10 at
+//! 1e-10 (that reference is good to about 1e-10 for the smallest CoRs). Against the
+//! brute-force integration in `tests/fast_independent.rs`: 5e-11 at `rtol = 1e-8`. `rtol`
+//! governs the CoR; the contact time, located where the force vanishes like
+//! `(t_end - t)^(3/2)`, is less accurate (at most 1.0e-5 at `rtol = 1e-6` and 3.5e-10 at 1e-10
+//! on the external tables, `mdr-impact validate`).
+//! Cost on the 765 external rows (`tests/fast_xcheck.rs`, ignored): 17.7 and 70 steps on
 //! average at `rtol = 1e-6` and `1e-10` (26.9 and about 100 with the absolute tolerance and
-//! second solves before), 283 M instructions for all rows at 1e-6 (369 M before).
+//! second solves before), 277 M instructions for all rows at 1e-6 (369 M before).
 //! The largest shares are the Ting roots of the restitution (dense evaluations of the
 //! compression history), the exact kernels (`exp`, `Ĵ`) and the 5x5 Newton solves. The error
-//! estimate (`cor_error_estimate`) is 13x (at `rtol = 1e-2`) to a few thousand times the actual
-//! error (at 1e-6 at least 69x, median about 750), never below it on those rows.
+//! estimate (`cor_error_estimate`) is 13x (at `rtol = 1e-2`) to several thousand times the
+//! actual error (at 1e-6 at least 112x, median about 750), never below it on those rows.
 //!
 //! Independent of [`crate::mdr`] and [`crate::theory`]; shares only [`Prony`] with them.
 
