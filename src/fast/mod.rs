@@ -801,9 +801,11 @@ impl Solver {
         self.dense_ok = ok;
     }
 
-    /// Modulus by which a mismatch of `w` between the nodes of a step of length `h` acts on the
-    /// force: `c_inf + Σ_k c_k min(1, 2 (S+1)^2 tau_k / h)` (see the error estimate of
-    /// [`Solver::comp_step`]).
+    /// Modulus by which a mismatch `δw` of `w` between the nodes of a step of length `h` acts on
+    /// the force: `c_inf + Σ_k c_k min(1, 2 (S+1)^2 tau_k / h)`. Through a term it acts as
+    /// `∫ exp(-(t-s)/tau_k) δw'(s) ds`: at most `c_k |δw|`, and for `tau_k << h` about
+    /// `c_k tau_k |δw'| <= c_k tau_k 2 (S+1)^2 |δw| / h` (Markov's inequality for the step
+    /// polynomial; the glassy modulus overstates stiff terms by `h / tau_k`).
     fn effective_modulus(&self, h: f64) -> f64 {
         let markov = 2.0 * ((S + 1) * (S + 1)) as f64;
         let mut g = self.c_inf;
@@ -811,6 +813,13 @@ impl Solver {
             g += self.c[k] * (markov * self.tau[k] / h).min(1.0);
         }
         g
+    }
+
+    /// Defect of a compression step's polynomial at `θ`: `|d'' + F|` plus the mismatch between
+    /// `w` and `d^(3/2)` times `geff` ([`Solver::effective_modulus`]).
+    fn comp_defect(&self, seg: &Seg, th: f64, geff: f64) -> f64 {
+        let pt = self.eval_seg(seg, th, true);
+        (pt.dd + self.force_comp(&pt)).abs() + K16 * geff * (pow15(pt.d) - pt.w).abs()
     }
 
     fn force_comp(&self, pt: &Pt) -> f64 {
@@ -987,15 +996,8 @@ impl Solver {
             s0: *s0,
         };
         // defect of the collocation polynomial between the nodes
-        let pt = self.eval_seg(&seg, self.tab.theta_star, true);
-        let d1 = pt.dd + self.force_comp(&pt);
-        // a mismatch δw between w and d^(3/2) acts on the force through c_inf δw and, per
-        // term, ∫ exp(-(t-s)/tau_k) δw'(s) ds: at most c_k |δw|, and for tau_k << h about
-        // c_k tau_k |δw'| <= c_k tau_k 2 (S+1)^2 |δw| / h (Markov's inequality for the step
-        // polynomial; the glassy modulus overstates stiff terms by h / tau_k)
         let geff = self.effective_modulus(h);
-        let d2 = K16 * geff * (pow15(pt.d) - pt.w).abs();
-        let mut err = h * (d1.abs() + d2);
+        let mut err = h * self.comp_defect(&seg, self.tab.theta_star, geff);
         if kind == Kind::First && self.tau[..self.k].iter().any(|&tk| tk < h) {
             // a term relaxing inside the first step: the defect at the middle of every gap
             // between the nodes, not only at the probe, which can sit near a zero of the defect
@@ -1003,10 +1005,7 @@ impl Solver {
             // an actual error of 7e-10 at rtol 1e-10; 6% longer or shorter, its estimate was
             // about 100)
             for i in 1..S {
-                let pg = self.eval_seg(&seg, 0.5 * (c[i - 1] + c[i]), true);
-                let dg =
-                    (pg.dd + self.force_comp(&pg)).abs() + K16 * geff * (pow15(pg.d) - pg.w).abs();
-                err = err.max(h * dg);
+                err = err.max(h * self.comp_defect(&seg, 0.5 * (c[i - 1] + c[i]), geff));
             }
         }
         if kind == Kind::First {
@@ -1019,10 +1018,7 @@ impl Solver {
             for k in 0..self.k {
                 let th = self.tau[k] / h;
                 if th < c[1] {
-                    let pl = self.eval_seg(&seg, th, true);
-                    let dl = (pl.dd + self.force_comp(&pl)).abs()
-                        + K16 * geff * (pow15(pl.d) - pl.w).abs();
-                    err += FAST_LAYER_WIDTH * self.tau[k] * dl;
+                    err += FAST_LAYER_WIDTH * self.tau[k] * self.comp_defect(&seg, th, geff);
                 }
             }
         }
@@ -1311,7 +1307,6 @@ impl Solver {
             s0: *s0,
         };
         let ts = self.tab.theta_star;
-        let pt = self.eval_seg(&seg, ts, false);
         // guess for t_1 at the probe: interpolate the node values linearly
         let mut g = t1[0];
         for i in 1..S {
@@ -1321,8 +1316,7 @@ impl Solver {
                 break;
             }
         }
-        let fs = self.t1_root(t0 + ts * h, pt.d, &pt.s, g)?.f;
-        let mut err = h * (pt.dd + fs).abs();
+        let mut err = h * self.rest_defect(&seg, ts, g)?;
         if pred.is_none() {
             // first restitution step: the Ting factor exp(-(t - t_1)/tau_k) with
             // t - t_1 ~ 2 (t - t_m) leaves a layer of width tau_k / 2 after t_m, which the probe
@@ -1331,9 +1325,10 @@ impl Solver {
             for k in 0..self.k {
                 let th = 0.5 * self.tau[k] / h;
                 if th < c[1] {
-                    let pl = self.eval_seg(&seg, th, false);
-                    let fl = self.t1_root(t0 + th * h, pl.d, &pl.s, t0 - th * h)?.f;
-                    err += FAST_LAYER_WIDTH * 0.5 * self.tau[k] * (pl.dd + fl).abs();
+                    err += FAST_LAYER_WIDTH
+                        * 0.5
+                        * self.tau[k]
+                        * self.rest_defect(&seg, th, t0 - th * h)?;
                 }
             }
         }
@@ -1365,6 +1360,13 @@ impl Solver {
             err,
             end,
         })
+    }
+
+    /// Defect `|d'' + F|` of a restitution step's polynomial at `θ` (`guess`: of `t_1` there).
+    fn rest_defect(&mut self, seg: &Seg, th: f64, guess: f64) -> Result<f64> {
+        let pt = self.eval_seg(seg, th, false);
+        let f = self.t1_root(seg.t0 + th * seg.h, pt.d, &pt.s, guess)?.f;
+        Ok((pt.dd + f).abs())
     }
 
     /// `g(θ) = c_inf d + Σ c_k S_k` on a restitution step (contact while `g > 0`).
@@ -1606,11 +1608,7 @@ impl Retry {
     }
 
     fn next_order(&mut self, h: f64, ratio: f64, order: f64) -> f64 {
-        let nominal = if ratio.is_finite() && ratio > 0.0 {
-            h * (0.9 * ratio.powf(-1.0 / order)).clamp(0.2, 2.0)
-        } else {
-            h * step_factor(ratio)
-        };
+        let nominal = h * step_factor_order(ratio, order);
         let next = match self.last {
             Some((h0, r0)) if h0 > h && r0 > ratio && ratio.is_finite() => {
                 let p = ((r0 / ratio).ln() / (h0 / h).ln()).clamp(1.0, S as f64 + 1.0);
@@ -1624,10 +1622,16 @@ impl Retry {
 }
 
 fn step_factor(ratio: f64) -> f64 {
+    step_factor_order(ratio, S as f64 + 1.0)
+}
+
+/// Step-size factor for an error ratio (estimate over tolerance) that grows like `h^order`:
+/// `0.9 ratio^(-1/order)` within `[0.2, 2]`.
+fn step_factor_order(ratio: f64, order: f64) -> f64 {
     if ratio <= 0.0 || !ratio.is_finite() {
         return if ratio <= 0.0 { 3.0 } else { 0.2 };
     }
-    (0.9 * ratio.powf(-1.0 / (S as f64 + 1.0))).clamp(0.2, 2.0)
+    (0.9 * ratio.powf(-1.0 / order)).clamp(0.2, 2.0)
 }
 
 /// Impact of the unit sphere (`m = R = v0 = 1`) on a half-space with the equivalent
@@ -1816,7 +1820,6 @@ struct Turn {
 /// Leaves the dense compression output in `s`.
 fn compress(s: &mut Solver, prec: f64, history: bool) -> Result<Turn> {
     let tol = prec * FAST_TOL_FACTOR;
-    let rtol = prec;
     s.rtol = prec;
     s.comp.clear();
     s.last_seg = 0;
@@ -1831,7 +1834,7 @@ fn compress(s: &mut Solver, prec: f64, history: bool) -> Result<Turn> {
     // glassy Hertz time of maximum indentation as the first length scale
     let d0 = (1.25 / (K16 * s.glassy)).powf(0.4);
     let tm0 = 0.5 * HERTZ_CONTACT_FACTOR * d0;
-    let mut h = 0.1 * tm0 * (rtol / 1e-6).powf(1.0 / (S as f64 + 2.0)).min(1.0);
+    let mut h = 0.1 * tm0 * (prec / 1e-6).powf(1.0 / (S as f64 + 2.0)).min(1.0);
 
     // ---- compression
     let (mut t, mut d, mut v, mut f_n) = (0.0_f64, 0.0_f64, 1.0_f64, 0.0_f64);
