@@ -73,7 +73,7 @@
 //! governs the CoR; the contact time, located where the force vanishes like
 //! `(t_end - t)^(3/2)`, is less accurate (at most 1.0e-5 at `rtol = 1e-6` and 3.5e-10 at 1e-10
 //! on the external tables, `mdr-impact validate`).
-//! Cost on the 765 external rows (`tests/fast_xcheck.rs`, ignored): 17.7 and 70 steps on
+//! Cost on the 765 external rows (`tests/fast_xcheck.rs`, ignored): 17.7 and 69 steps on
 //! average at `rtol = 1e-6` and `1e-10` (26.9 and about 100 with the absolute tolerance and
 //! second solves before), 239 M instructions for all rows at 1e-6 (369 M before).
 //! The largest shares are the Ting roots of the restitution (dense evaluations of the
