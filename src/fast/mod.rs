@@ -1753,9 +1753,8 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
         let turn = compress(&mut s, FAST_SMALL_COR_MAX_RTOL, history)?;
         out = restitute(&mut s, turn, FAST_SMALL_COR_MAX_RTOL)?;
         out.work.steps += first_steps;
-        out.work.levels = 2;
+        out.work.levels = 2; // evaluations: `s` counts both solves
     }
-    out.work.evaluations = s.evaluations;
     Ok(out)
 }
 
