@@ -186,7 +186,7 @@ fn work_is_pinned() {
     );
 }
 const PINNED_STEPS: u64 = 12;
-const PINNED_EVALUATIONS: u64 = 96;
+const PINNED_EVALUATIONS: u64 = 83;
 
 #[test]
 fn errors_are_reported() {

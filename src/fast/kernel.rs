@@ -130,6 +130,69 @@ pub(crate) fn jhat_int<const N: usize>(x: f64, out: &mut [f64; N]) {
     out[0] = 0.0;
 }
 
+/// [`jhat_int`] for `L` arguments at once, with `exp(-x)` of each (`ex`). The series of the
+/// arguments below 2 run in one loop (until every one has converged), so that their
+/// independent dependency chains overlap instead of running one after another: the kernels of
+/// a step's nodes are needed together. `N >= 3`.
+pub(crate) fn jhat_int_lanes<const N: usize, const L: usize>(
+    xs: &[f64; L],
+    tol: f64,
+    out: &mut [[f64; N]; L],
+    ex: &mut [f64; L],
+) {
+    debug_assert!(N >= 3);
+    let top = N - 1;
+    let mut t = [1.0; L]; // x^j / j!
+    let mut sum = [RECIP[top]; L];
+    let mut xl = [0.0; L];
+    let mut any = false;
+    for l in 0..L {
+        if xs[l] < FORWARD_X {
+            xl[l] = xs[l];
+            any = true;
+        }
+    }
+    if any {
+        let mut j = 0;
+        loop {
+            j += 1;
+            let mut done = true;
+            for l in 0..L {
+                t[l] *= xl[l] * RECIP[j];
+                let term = t[l] * RECIP[top + j];
+                sum[l] += term;
+                done &= term <= tol * sum[l];
+            }
+            if done || j > 60 {
+                break;
+            }
+        }
+    }
+    for l in 0..L {
+        let x = xs[l];
+        ex[l] = exp_neg(x);
+        if x >= FORWARD_X {
+            // forward recurrence from Ĵ_1 = (1 - e^(-x)) / x (no cancellation for x >= 2)
+            let inv_x = 1.0 / x;
+            let mut v = (1.0 - ex[l]) * inv_x;
+            out[l][0] = 0.0;
+            out[l][1] = v;
+            for m in 1..top {
+                v = (1.0 - m as f64 * v) * inv_x;
+                out[l][m + 1] = v;
+            }
+            continue;
+        }
+        let mut v = ex[l] * sum[l];
+        out[l][top] = v;
+        for m in (1..top).rev() {
+            v = (1.0 - x * v) * RECIP[m];
+            out[l][m] = v;
+        }
+        out[l][0] = 0.0;
+    }
+}
+
 /// `Ĵ_(ν0 + m)(x)` for `m = 0..N` into `out[m]` (`ν0` a positive multiple of 1/2, `N` small):
 /// forward recurrence from `Ĵ_ν0` for `x >= 2`, otherwise one positive series shared by all `m`.
 pub(crate) fn jhat_family<const N: usize>(nu0: f64, x: f64, out: &mut [f64; N]) {
@@ -214,6 +277,32 @@ mod tests {
                         nu0 + m as f64
                     );
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn jhat_int_lanes_match_single() {
+        let xs = [0.0, 1e-9, 0.3, 1.999, 2.0, 7.5, 1e3];
+        let mut out = [[0.0; 7]; 7];
+        let mut ex = [0.0; 7];
+        jhat_int_lanes(&xs, 1e-17, &mut out, &mut ex);
+        for (l, &x) in xs.iter().enumerate() {
+            let mut one = [0.0; 7];
+            jhat_int(x, &mut one);
+            assert_eq!(ex[l], exp_neg(x));
+            for m in 1..7 {
+                // the lanes may add terms below 1e-17 of the sum that the single series skips,
+                // and start the forward recurrence from 1 - e^(-x) instead of expm1
+                assert!((out[l][m] - one[m]).abs() <= 1e-15 * one[m], "x={x} m={m}");
+            }
+        }
+        // a truncated series (the solver truncates at 1e-5 rtol) is within its truncation
+        let mut loose = [[0.0; 7]; 7];
+        jhat_int_lanes(&xs, 1e-11, &mut loose, &mut ex);
+        for l in 0..xs.len() {
+            for m in 1..7 {
+                assert!((loose[l][m] - out[l][m]).abs() <= 3e-11 * out[l][m]);
             }
         }
     }
