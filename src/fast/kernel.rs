@@ -194,7 +194,8 @@ pub(crate) fn jhat_int_lanes<const N: usize, const L: usize>(
 }
 
 /// `Ĵ_(ν0 + m)(x)` for `m = 0..N` into `out[m]` (`ν0` a positive multiple of 1/2, `N` small):
-/// forward recurrence from `Ĵ_ν0` for `x >= 2`, otherwise one positive series shared by all `m`.
+/// forward recurrence from `Ĵ_ν0` for `x >= 2`, otherwise the positive series of the highest
+/// order and the backward recurrence.
 pub(crate) fn jhat_family<const N: usize>(nu0: f64, x: f64, out: &mut [f64; N]) {
     if x >= FORWARD_X {
         let mut j = if nu0 == 1.0 {
@@ -210,28 +211,28 @@ pub(crate) fn jhat_family<const N: usize>(nu0: f64, x: f64, out: &mut [f64; N]) 
         }
         return;
     }
-    // positive series Σ_j x^j/j! / (ν0 + m + j); with 2 ν0 integer, 1/(ν0 + m + j) = 2/(2ν0 + 2m + 2j)
+    // the positive series Σ_j x^j/j! / (ν_top + j) for the highest order only (with 2 ν0
+    // integer, 1/(ν + j) = 2/(2ν + 2j)), then the backward recurrence Ĵ_ν = (1 - x Ĵ_(ν+1)) / ν
+    // (stable: errors shrink by x/ν), as in jhat_int
     let two_nu0 = (2.0 * nu0) as usize;
-    let mut sums = [0.0; N];
-    for (m, s) in sums.iter_mut().enumerate() {
-        *s = 2.0 * RECIP[two_nu0 + 2 * m];
-    }
+    let two_top = two_nu0 + 2 * (N - 1);
     let mut t = 1.0;
+    let mut sum = 2.0 * RECIP[two_top];
     let mut j = 0;
     loop {
         j += 1;
         t *= x * RECIP[j];
-        let base = two_nu0 + 2 * j;
-        for (m, s) in sums.iter_mut().enumerate() {
-            *s += 2.0 * t * RECIP[base + 2 * m];
-        }
-        if t <= 1e-17 * sums[N - 1] || j > 60 {
+        let term = 2.0 * t * RECIP[two_top + 2 * j];
+        sum += term;
+        if term <= 1e-17 * sum || j > 60 {
             break;
         }
     }
-    let ex = (-x).exp();
-    for m in 0..N {
-        out[m] = ex * sums[m];
+    let mut v = (-x).exp() * sum;
+    out[N - 1] = v;
+    for m in (0..N - 1).rev() {
+        v = (1.0 - x * v) * 2.0 * RECIP[two_nu0 + 2 * m];
+        out[m] = v;
     }
 }
 
@@ -266,7 +267,9 @@ mod tests {
     #[test]
     fn jhat_family_matches_general() {
         for &nu0 in &[1.0, 1.5] {
-            for &x in &[0.0, 1e-8, 0.3, 2.5, 9.0, 11.5, 13.0, 39.0, 41.0, 1e3, 1e9] {
+            for &x in &[
+                0.0, 1e-8, 0.05, 0.3, 1.0, 1.9, 2.5, 9.0, 11.5, 13.0, 39.0, 41.0, 1e3, 1e9,
+            ] {
                 let mut out = [0.0; 6];
                 jhat_family(nu0, x, &mut out);
                 for (m, &o) in out.iter().enumerate() {

@@ -1416,7 +1416,7 @@ impl Solver {
         // step end from the last node (θ = 1)
         let mut end = Pt {
             d: dfix[S - 1] + z[S - 1],
-            v: seg_poly(&seg, &powers(Kind::Regular, 1.0)).1 / h,
+            v: seg_poly_at(&seg, 1.0).1 / h,
             dd: 0.0,
             w: 0.0,
             q: [0.0; KMAX],
@@ -1529,9 +1529,25 @@ fn seg_poly(seg: &Seg, p: &Powers) -> (f64, f64, f64) {
     (d, v, a)
 }
 
+/// [`seg_poly`] at `θ`; on a regular step by Horner's rule (`d = dn + vh θ + Σ α_j θ^(j+2)`),
+/// without the table of powers.
+fn seg_poly_at(seg: &Seg, th: f64) -> (f64, f64, f64) {
+    if seg.kind == Kind::First {
+        return seg_poly(seg, &powers(Kind::First, th));
+    }
+    let (mut d, mut v, mut a) = (0.0, 0.0, 0.0);
+    for j in (0..S).rev() {
+        let e = (j + 2) as f64;
+        d = d * th + seg.alpha[j];
+        v = v * th + e * seg.alpha[j];
+        a = a * th + e * (e - 1.0) * seg.alpha[j];
+    }
+    (seg.dn + th * (seg.vh + th * d), seg.vh + th * v, a)
+}
+
 /// `d` of a step's polynomial at `θ` (see [`seg_poly`]).
 fn seg_d(seg: &Seg, th: f64) -> f64 {
-    seg_poly(seg, &powers(seg.kind, th)).0
+    seg_poly_at(seg, th).0
 }
 
 /// `max(x, 0)^(3/2)`.
@@ -1994,7 +2010,7 @@ fn compress(s: &mut Solver, prec: f64, history: bool) -> Result<Turn> {
         // (the polynomial alone: the hereditary integrals once, at the root)
         let (mut lo, mut hi) = (0.0, 1.0);
         let mut th = 0.5;
-        let (_, mut vt, mut at) = seg_poly(&seg, &powers(seg.kind, th));
+        let (_, mut vt, mut at) = seg_poly_at(&seg, th);
         for it in 0..=tolerances::ROOT_MAX_ITER {
             if it == tolerances::ROOT_MAX_ITER {
                 return Err(Error::NoConvergence {
@@ -2015,7 +2031,7 @@ fn compress(s: &mut Solver, prec: f64, history: bool) -> Result<Turn> {
             };
             let done = (next - th).abs() <= 1e-15 || hi - lo <= 1e-15;
             th = next;
-            (_, vt, at) = seg_poly(&seg, &powers(seg.kind, th));
+            (_, vt, at) = seg_poly_at(&seg, th);
             if done {
                 break;
             }
