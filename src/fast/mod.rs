@@ -80,7 +80,7 @@
 //! Cost on the 765 external rows (`tests/fast_xcheck.rs`, ignored): 17.7 and 69 steps on
 //! average at `rtol = 1e-6` and `1e-10` (26.9 and about 100 with the absolute tolerance and
 //! second solves before), 154 and 460 history and force evaluations (166 and 524 with the
-//! quadratic `t_1` guesses), 215 M instructions for all rows at 1e-6 (239 M before the
+//! quadratic `t_1` guesses), 209 M instructions for all rows at 1e-6 (239 M before the
 //! guesses, root remainder, series truncation and node kernels of 2026-11-22, 369 M before
 //! the energy-scaled tolerance).
 //! The largest shares are the Ting roots of the restitution (dense evaluations of the
