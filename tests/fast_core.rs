@@ -176,6 +176,24 @@ fn layer_probe_rows() {
     }
 }
 
+/// A contact that ends inside the first restitution step (the step starts at the turn, `v = 0`):
+/// the last-step fit judged its end location against `|v|` at the step start, never converged
+/// and returned `NoConvergence` at rtol 1e-2 (external corner table, CoR 1.7e-3).
+#[test]
+fn contact_ending_in_the_first_restitution_step() {
+    let reference = 0.001_718_964_872_610_782;
+    let prony = canonical(
+        -0.008_515_428_859_206_309,
+        0.000_104_565_594_477_614_22,
+        85.093_878_000_862_42,
+    );
+    for rtol in [1e-2, 3e-3, 1e-3, 1e-4] {
+        let cor = fast::impact(&prony, rtol, false).unwrap().cor;
+        let err = ((cor - reference) / reference).abs();
+        assert!(err <= rtol, "rtol {rtol:e}: {err:.2e}");
+    }
+}
+
 /// Work counters of one solve, pinned so that a change in work is noticed.
 #[test]
 fn work_is_pinned() {
@@ -186,7 +204,7 @@ fn work_is_pinned() {
     );
 }
 const PINNED_STEPS: u64 = 12;
-const PINNED_EVALUATIONS: u64 = 83;
+const PINNED_EVALUATIONS: u64 = 76;
 
 #[test]
 fn errors_are_reported() {

@@ -58,7 +58,9 @@
 //! bound from the second derivative of `d^(3/2)`; restitution: the second-order remainder of
 //! the force at each node as a function of the shift of `Φ`, `d²F/dΦ² = 4 / (sqrt(d(t_1)) G_eq)`)
 //! is below its stop level; a Ting root is taken from one Newton step by the same remainder.
-//! The Ting roots start from the polynomial through the last step's node values of `t_1(t)`.
+//! The Ting roots start from the polynomial through the last step's node values of `t_1(t)`;
+//! a step's predictor is the last step's polynomial, for the first restitution step the
+//! compression step of the turn (the force is `C^1` at `t_m`).
 //! The kernel series are truncated at [`FAST_SERIES_LEVEL`]` rtol`, and the kernels of a step's
 //! nodes are evaluated together (their series in one loop). A CoR below
 //! [`FAST_SMALL_COR`] found at a request looser than [`FAST_SMALL_COR_MAX_RTOL`] is solved
@@ -79,10 +81,11 @@
 //! on the external tables, `mdr-impact validate`).
 //! Cost on the 765 external rows (`tests/fast_xcheck.rs`, ignored): 17.7 and 69 steps on
 //! average at `rtol = 1e-6` and `1e-10` (26.9 and about 100 with the absolute tolerance and
-//! second solves before), 154 and 460 history and force evaluations (166 and 524 with the
-//! quadratic `t_1` guesses), 209 M instructions for all rows at 1e-6 (239 M before the
-//! guesses, root remainder, series truncation and node kernels of 2026-11-22, 369 M before
-//! the energy-scaled tolerance).
+//! second solves before), 145 and 452 history and force evaluations (166 and 524 with the
+//! quadratic `t_1` guesses and a constant-force predictor for the first restitution step),
+//! 203 M instructions for all rows at 1e-6 (239 M before the guesses, root remainder, series
+//! truncation, node kernels and predictor of 2026-11-22, 369 M before the energy-scaled
+//! tolerance).
 //! The largest shares are the Ting roots of the restitution (dense evaluations of the
 //! compression history), the exact kernels (`exp`, `Ĵ`) and the 5x5 Newton solves. The error
 //! estimate (`cor_error_estimate`) is 13x (at `rtol = 1e-2`) to several thousand times the
@@ -1235,6 +1238,7 @@ impl Solver {
         f_n: f64,
         t1_guess: &[f64; S],
         pred: Option<&Seg>,
+        first: bool,
     ) -> Result<StepOut> {
         let b = &self.tab.reg;
         let c = self.tab.c;
@@ -1394,7 +1398,7 @@ impl Solver {
         // guess for t_1 at the probe: the polynomial through the node values
         let g = interp_nodes(self.tab, &t1, ts).clamp(0.0, self.t_m);
         let mut err = h * self.rest_defect(&seg, ts, g)?;
-        if pred.is_none() {
+        if first {
             // first restitution step: the Ting factor exp(-(t - t_1)/tau_k) with
             // t - t_1 ~ 2 (t - t_m) leaves a layer of width tau_k / 2 after t_m, which the probe
             // does not see when it lies before the second node (without this probe three of
@@ -2126,7 +2130,17 @@ fn restitute(s: &mut Solver, turn: Turn, prec: f64) -> Result<Outcome> {
             }
             .clamp(0.0, t_m);
         }
-        let out = match s.rest_step(t, d, v, &sk, h, f_n, &guess, prev_rest.as_ref()) {
+        // predictor: the last restitution step's polynomial, or for the first one the
+        // compression step of the turn (the force is C^1 there: F' = -(16/3) Σ c_k q_k / tau_k
+        // on both sides, so its polynomial extrapolates to third order)
+        let turn_seg = if prev_rest.is_none() {
+            s.comp.last().copied()
+        } else {
+            None
+        };
+        let pred = prev_rest.as_ref().or(turn_seg.as_ref());
+        let first = prev_rest.is_none();
+        let out = match s.rest_step(t, d, v, &sk, h, f_n, &guess, pred, first) {
             Ok(o) => o,
             Err(Error::NoConvergence { .. }) => {
                 h *= 0.25;
@@ -2180,11 +2194,14 @@ fn restitute(s: &mut Solver, turn: Turn, prec: f64) -> Result<Outcome> {
                 // than the step's accuracy needs: F vanishes there like (t_end - t)^(3/2))
                 // F ~ K (t_end - t)^(3/2) near the end (K from the force at the step start,
                 // a distance th h before the end): a step end off by miss h changes v by about
-                // K (miss h)^(5/2) / (5/2); the CoR is |v| there, hence the relative bound
+                // K (miss h)^(5/2) / (5/2); the CoR is |v| there (at the end, from the step's
+                // polynomial: the step may start at the turn, v = 0, and end the contact),
+                // hence the relative bound
                 let kink = f_n * (miss / th.max(1e-3)).powf(1.5) * miss * h * 0.4;
+                let v_scale = (seg_poly_at(&seg, th).1 / h).abs().max(v.abs());
                 let done = miss <= 1e-9
                     || (miss <= 1e-6 && miss >= 0.5 * last_miss)
-                    || (miss <= 0.1 && kink <= 0.01 * tol * v.abs());
+                    || (miss <= 0.1 && kink <= 0.01 * tol * v_scale);
                 last_miss = miss;
                 if done {
                     if !(ratio <= 1.0) {
