@@ -88,7 +88,7 @@
 //! tolerance).
 //! The largest shares are the Ting roots of the restitution (dense evaluations of the
 //! compression history), the exact kernels (`exp`, `Ĵ`) and the 5x5 Newton solves. The error
-//! estimate (`cor_error_estimate`) is 13x (at `rtol = 1e-2`) to several thousand times the
+//! estimate (`cor_error_estimate`) is 12.8x (at `rtol = 1e-2`) to several thousand times the
 //! actual error (at 1e-6 at least 112x, median about 750), never below it on those rows.
 //!
 //! Independent of [`crate::mdr`] and [`crate::theory`]; shares only [`Prony`] with them.
@@ -1750,7 +1750,7 @@ fn step_factor_order(ratio: f64, order: f64) -> f64 {
 /// [`crate::tolerances`]); `history` asks for `(t, d, v, F, a)` at the step ends. The outcome
 /// is canonical: `rebound_velocity = cor`, `dissipated_energy = (1 - e^2)/2`,
 /// `max_contact_radius = sqrt(d_max)`, solver `"fast"`. `cor_error_estimate` is the sum of the
-/// accepted local error estimates divided by `e` (13x to a few thousand times the actual
+/// accepted local error estimates divided by `e` (12.8x to a few thousand times the actual
 /// error on the external tables, never below it); `max_force` is the largest node force,
 /// refined by a parabola through its neighbours; `work.steps` counts attempted steps and
 /// `work.evaluations` force and history evaluations, of both solves when a small CoR is solved
