@@ -1026,11 +1026,12 @@ impl Solver {
             for i in 0..S {
                 r[i] = -(z[i] + h2 * af[i]);
             }
+            // dW_j/dD_j = (3/2) sqrt(D_j)
+            let dw: [f64; S] = std::array::from_fn(|j| 1.5 * (dfix[j] + z[j]).max(0.0).sqrt());
             let mut jf = [[0.0; S]; S];
             for i in 0..S {
                 for j in 0..S {
-                    let dw = 1.5 * (dfix[j] + z[j]).max(0.0).sqrt();
-                    jf[i][j] = K16 * (m[i][j] + if i == j { self.c_inf } else { 0.0 }) * dw;
+                    jf[i][j] = K16 * (m[i][j] + if i == j { self.c_inf } else { 0.0 }) * dw[j];
                 }
             }
             let delta = newton_correction(
