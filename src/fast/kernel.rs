@@ -100,6 +100,9 @@ pub(crate) fn jhat(nu: f64, x: f64) -> f64 {
 ///
 /// For `x >= 2` as [`jhat_family`] (`ν0 = 1`); for `x < 2` one series for the highest order, `Ĵ_ν(x) = e^(-x) Σ_j x^j / (j! (ν + j))`,
 /// then the backward recurrence `Ĵ_ν = (1 - x Ĵ_(ν+1)) / ν` (stable: errors shrink by `x/ν`).
+/// The one-argument form of [`jhat_int_lanes`], which the solver uses; kept as its reference
+/// in the tests.
+#[cfg(test)]
 pub(crate) fn jhat_int<const N: usize>(x: f64, out: &mut [f64; N]) {
     if x >= FORWARD_X || N < 3 {
         let mut tmp = [0.0; N];
@@ -130,10 +133,14 @@ pub(crate) fn jhat_int<const N: usize>(x: f64, out: &mut [f64; N]) {
     out[0] = 0.0;
 }
 
-/// [`jhat_int`] for `L` arguments at once, with `exp(-x)` of each (`ex`). The series of the
-/// arguments below 2 run in one loop (until every one has converged), so that their
-/// independent dependency chains overlap instead of running one after another: the kernels of
-/// a step's nodes are needed together. `N >= 3`.
+/// `Ĵ_m(x_l)` for the integers `m = 1..=N-1` into `out[l][m]` (`out[l][0]` is unused) for `L`
+/// arguments at once, with `exp(-x_l)` in `ex[l]`; the series truncated at `tol` relative.
+/// For `x >= 2` the forward recurrence from `Ĵ_1 = (1 - e^(-x)) / x`; below, one series for
+/// the highest order, `Ĵ_ν(x) = e^(-x) Σ_j x^j / (j! (ν + j))`, and the backward recurrence
+/// `Ĵ_ν = (1 - x Ĵ_(ν+1)) / ν` (stable: errors shrink by `x/ν`). The series of all arguments
+/// below 2 run in one loop (until every one has converged), so that their independent
+/// dependency chains overlap instead of running one after another: the kernels of a step's
+/// nodes are needed together. `N >= 3`.
 pub(crate) fn jhat_int_lanes<const N: usize, const L: usize>(
     xs: &[f64; L],
     tol: f64,

@@ -394,89 +394,67 @@ impl Jt {
     };
 }
 
-fn jt(kind: Kind, x: f64) -> Jt {
+/// Kernels of a regular step from `Ĵ_1 ..= Ĵ_(S+1)` (`t[m] = Ĵ_m`, `t[0]` unused).
+fn jt_regular(t: &[f64; S + 2]) -> Jt {
+    let mut j = Jt::ZERO;
+    j.one = t[1];
+    j.d.copy_from_slice(&t[2..S + 2]);
+    j.w.copy_from_slice(&t[1..S + 1]);
+    j
+}
+
+/// Kernels of the first step (powers of `sqrt(θ)`) at `x`.
+fn jt_first(x: f64) -> Jt {
+    let kind = Kind::First;
+    // integer family 1, 2, ..., S+1 and half-integer family 3/2, 5/2, ..., S+1/2
+    let mut fi = [0.0; S + 1];
+    let mut fh = [0.0; S + 1];
+    kernel::jhat_family(1.0, x, &mut fi);
+    kernel::jhat_family(1.5, x, &mut fh);
+    let pick = |nu: f64| -> f64 {
+        if nu.fract() == 0.0 {
+            fi[nu as usize - 1]
+        } else {
+            fh[(nu - 1.5) as usize]
+        }
+    };
+    let mut j = Jt {
+        one: fi[0],
+        wfix: fh[0],
+        d: [0.0; S],
+        w: [0.0; S],
+    };
+    for k in 0..S {
+        j.d[k] = pick(dexp(kind, k));
+        j.w[k] = pick(wexp(kind, k));
+    }
+    j
+}
+
+/// The kernels of a step at `x` and `exp(-x)` (from the same evaluation on regular steps); the
+/// integer series truncated at `tol` relative.
+fn jt_ex(kind: Kind, x: f64, tol: f64) -> (Jt, f64) {
+    let (jj, ex) = jt_lanes(kind, &[x], tol);
+    (jj[0], ex[0])
+}
+
+/// [`jt_ex`] at `L` arguments, e.g. the nodes `x_i = c_i h / tau` of a step: on regular steps
+/// in one pass ([`kernel::jhat_int_lanes`]).
+fn jt_lanes<const L: usize>(kind: Kind, xs: &[f64; L], tol: f64) -> ([Jt; L], [f64; L]) {
+    let mut ex = [0.0; L];
     match kind {
         Kind::Regular => {
-            let mut t = [0.0; S + 2];
-            kernel::jhat_int(x, &mut t);
-            let mut j = Jt {
-                one: t[1],
-                wfix: 0.0,
-                d: [0.0; S],
-                w: [0.0; S],
-            };
-            j.d.copy_from_slice(&t[2..S + 2]);
-            j.w.copy_from_slice(&t[1..S + 1]);
-            j
+            let mut t = [[0.0; S + 2]; L];
+            kernel::jhat_int_lanes(xs, tol, &mut t, &mut ex);
+            (std::array::from_fn(|i| jt_regular(&t[i])), ex)
         }
         Kind::First => {
-            // integer family 1, 2, ..., S+1 and half-integer family 3/2, 5/2, ..., S+1/2
-            let mut fi = [0.0; S + 1];
-            let mut fh = [0.0; S + 1];
-            kernel::jhat_family(1.0, x, &mut fi);
-            kernel::jhat_family(1.5, x, &mut fh);
-            let pick = |nu: f64| -> f64 {
-                if nu.fract() == 0.0 {
-                    fi[nu as usize - 1]
-                } else {
-                    fh[(nu - 1.5) as usize]
-                }
-            };
-            let mut j = Jt {
-                one: fi[0],
-                wfix: fh[0],
-                d: [0.0; S],
-                w: [0.0; S],
-            };
-            for k in 0..S {
-                j.d[k] = pick(dexp(kind, k));
-                j.w[k] = pick(wexp(kind, k));
-            }
-            j
-        }
-    }
-}
-
-/// [`jt`] and `exp(-x)` (from the same evaluation on regular steps).
-fn jt_ex(kind: Kind, x: f64, tol: f64) -> (Jt, f64) {
-    match kind {
-        Kind::Regular => {
-            let mut t = [[0.0; S + 2]; 1];
-            let mut ex = [0.0; 1];
-            kernel::jhat_int_lanes(&[x], tol, &mut t, &mut ex);
-            let mut jj = Jt::ZERO;
-            jj.one = t[0][1];
-            jj.d.copy_from_slice(&t[0][2..S + 2]);
-            jj.w.copy_from_slice(&t[0][1..S + 1]);
-            (jj, ex[0])
-        }
-        _ => (jt(kind, x), kernel::exp_neg(x)),
-    }
-}
-
-/// [`jt`] at the nodes `x_i = c_i h / tau` of a step, with `exp(-x_i)`: the kernels of the
-/// regular steps' nodes in one pass ([`kernel::jhat_int_lanes`]).
-fn jt_nodes(kind: Kind, xs: &[f64; S], tol: f64) -> ([Jt; S], [f64; S]) {
-    let mut jj = [Jt::ZERO; S];
-    let mut ex = [0.0; S];
-    match kind {
-        Kind::Regular => {
-            let mut t = [[0.0; S + 2]; S];
-            kernel::jhat_int_lanes(xs, tol, &mut t, &mut ex);
-            for i in 0..S {
-                jj[i].one = t[i][1];
-                jj[i].d.copy_from_slice(&t[i][2..S + 2]);
-                jj[i].w.copy_from_slice(&t[i][1..S + 1]);
-            }
-        }
-        _ => {
-            for i in 0..S {
-                jj[i] = jt(kind, xs[i]);
+            for i in 0..L {
                 ex[i] = kernel::exp_neg(xs[i]);
             }
+            (std::array::from_fn(|i| jt_first(xs[i])), ex)
         }
     }
-    (jj, ex)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -942,7 +920,7 @@ impl Solver {
         let mut send = [0.0; KMAX];
         for k in 0..self.k {
             let ck = self.c[k];
-            let (jn, exn) = jt_nodes(
+            let (jn, exn) = jt_lanes::<S>(
                 kind,
                 &std::array::from_fn(|i| c[i] * h / self.tau[k]),
                 self.series_tol(),
@@ -1254,7 +1232,7 @@ impl Solver {
         let mut lk = [[[0.0; S]; S]; KMAX];
         let mut lc = [[0.0; S]; S];
         for k in 0..self.k {
-            let (jn, exn) = jt_nodes(
+            let (jn, exn) = jt_lanes::<S>(
                 Kind::Regular,
                 &std::array::from_fn(|i| c[i] * h / self.tau[k]),
                 self.series_tol(),
