@@ -123,10 +123,12 @@ pub const FAST_NEWTON_MAX_ITER: usize = 40;
 /// groups as with the level 1e-4 used before, 24% fewer history evaluations at rtol 1e-6.
 pub const FAST_NEWTON_LEVEL: f64 = 0.1;
 /// A Ting root is taken from one Newton step once that step is below `sqrt(FAST_ROOT_LEVEL rtol)`
-/// of `t_m`: the Newton point is then exact to about `FAST_ROOT_LEVEL rtol` relative in the
-/// force (second order in the step), at most about `0.002 rtol` over an impact. Measured: the
-/// same maximum errors on the external tables and 5000 random groups as with 1e-4, 4% fewer
-/// evaluations at rtol 1e-6.
+/// of `t_m`, or once the force there, moved to first order, is exact to `FAST_ROOT_LEVEL rtol`
+/// relative by its second derivative in the residual of `Φ` (see `Solver::t1_root`): the
+/// Newton point is then exact to about `FAST_ROOT_LEVEL rtol` relative in the force, at most
+/// about `0.002 rtol` over an impact. Measured: the same maximum errors on the external tables
+/// and 5000 random groups as with 1e-4, 4% fewer evaluations at rtol 1e-6 (the step rule), 3%
+/// fewer again (the force rule).
 pub const FAST_ROOT_LEVEL: f64 = 1e-3;
 /// The kernel series (`Ĵ` at the nodes, the dense Taylor polynomials of the compression
 /// history) are truncated at this fraction of `rtol`, relative (at least at 1e-17): their
