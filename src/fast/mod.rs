@@ -1407,7 +1407,7 @@ impl Solver {
             q: [0.0; KMAX],
             s: [0.0; KMAX],
         };
-        end.s = s_node(&linalg::mul_vec(&b.vd_inv, &z), S - 1);
+        end.s = s_node(&seg.alpha, S - 1);
         Ok(StepOut {
             seg,
             f,
