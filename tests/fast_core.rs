@@ -194,6 +194,40 @@ fn contact_ending_in_the_first_restitution_step() {
     }
 }
 
+/// Far outside the paper's range (p2 below 1e-5, CoR near 1e-4 and 1e-5), a loose request
+/// (rtol 1e-2, 1e-3) once failed with `NoConvergence` in the last-step fit: the step that stops
+/// short and the one that crosses the end disagreed on where it is and the fit 2-cycled, or
+/// the loose solve never settled. The fit now bisects its bracket, and a loose solve that does
+/// not converge is solved again at `FAST_SMALL_COR_MAX_RTOL` (as a small CoR is).
+#[test]
+fn extreme_dissipation_at_loose_rtol() {
+    for (nu, p2, p3) in [
+        (
+            0.380_149_079_585_137,
+            1.717_407_762_323_821_6e-6,
+            795.160_056_152_254_9,
+        ),
+        (
+            -0.581_156_535_258_768_8,
+            1.427_858_258_373_650_3e-6,
+            753.041_904_361_421_6,
+        ),
+        (
+            -0.955_599_911_335_821_9,
+            1.473_351_036_236_827_7e-6,
+            889.013_464_449_678_7,
+        ),
+    ] {
+        let prony = canonical(nu, p2, p3);
+        let tight = fast::impact(&prony, 1e-9, false).unwrap().cor;
+        for rtol in [1e-2, 1e-3] {
+            let cor = fast::impact(&prony, rtol, false).unwrap().cor;
+            let err = ((cor - tight) / tight).abs();
+            assert!(err <= rtol, "({nu}, {p2}, {p3}) rtol {rtol:e}: {err:.2e}");
+        }
+    }
+}
+
 /// Work counters of one solve, pinned so that a change in work is noticed.
 #[test]
 fn work_is_pinned() {
@@ -204,7 +238,7 @@ fn work_is_pinned() {
     );
 }
 const PINNED_STEPS: u64 = 12;
-const PINNED_EVALUATIONS: u64 = 76;
+const PINNED_EVALUATIONS: u64 = 74;
 
 #[test]
 fn errors_are_reported() {
