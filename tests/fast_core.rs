@@ -237,8 +237,8 @@ fn work_is_pinned() {
         (PINNED_STEPS, PINNED_EVALUATIONS)
     );
 }
-const PINNED_STEPS: u64 = 12;
-const PINNED_EVALUATIONS: u64 = 74;
+const PINNED_STEPS: u64 = 11;
+const PINNED_EVALUATIONS: u64 = 68;
 
 #[test]
 fn errors_are_reported() {
