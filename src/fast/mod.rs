@@ -434,14 +434,14 @@ fn jt_regular(t: &[f64; S + 2]) -> Jt {
     j
 }
 
-/// Kernels of the first step (powers of `sqrt(θ)`) at `x`.
-fn jt_first(x: f64) -> Jt {
+/// Kernels of the first step (powers of `sqrt(θ)`) at `x`, the series truncated at `tol`.
+fn jt_first(x: f64, tol: f64) -> Jt {
     let kind = Kind::First;
     // integer family 1, 2, ..., S+1 and half-integer family 3/2, 5/2, ..., S+1/2
     let mut fi = [0.0; S + 1];
     let mut fh = [0.0; S + 1];
-    kernel::jhat_family(1.0, x, &mut fi);
-    kernel::jhat_family(1.5, x, &mut fh);
+    kernel::jhat_family(1.0, x, tol, &mut fi);
+    kernel::jhat_family(1.5, x, tol, &mut fh);
     let pick = |nu: f64| -> f64 {
         if nu.fract() == 0.0 {
             fi[nu as usize - 1]
@@ -483,7 +483,7 @@ fn jt_lanes<const L: usize>(kind: Kind, xs: &[f64; L], tol: f64) -> ([Jt; L], [f
             for i in 0..L {
                 ex[i] = kernel::exp_neg(xs[i]);
             }
-            (std::array::from_fn(|i| jt_first(xs[i])), ex)
+            (std::array::from_fn(|i| jt_first(xs[i], tol)), ex)
         }
     }
 }
