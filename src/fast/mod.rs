@@ -97,7 +97,7 @@
 //! second solves before), 114 and 382 history and force evaluations (145 and 452 before the
 //! restitution changes of the second 2026-11-22 session: absolute Newton and root floors,
 //! node-by-node guesses, the turn layer step and [`FAST_REST_TOL_FACTOR`]; for CoR below 0.01
-//! 400 -> 273), 131 M instructions for the 660 rows of `cor_python.csv` at 1e-6 (203 M before
+//! 400 -> 273), 129 M instructions for the 660 rows of `cor_python.csv` at 1e-6 (203 M before
 //! those changes, 369 M before the energy-scaled tolerance).
 //! The largest shares are the Ting roots of the restitution (dense evaluations of the
 //! compression history), the exact kernels (`exp`, `Ĵ`) and the 5x5 Newton solves. The error
