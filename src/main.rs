@@ -362,7 +362,10 @@ fn run(cli: Cli) -> Result<(), Error> {
                 None
             } else {
                 let rows = mdr_impact::validate::external_rows()?.len() as u64;
-                let bar = progress_bar(rows, "bench fast on the external tables");
+                let bar = progress_bar(
+                    rows * bench::EXTERNAL_REPEATS as u64,
+                    "bench fast on the external tables",
+                );
                 let t = bench::external_timing(&|| bar.inc(1))?;
                 bar.finish_and_clear();
                 bench::write_external_csv(&out.join("bench_external.csv"), &t)?;
