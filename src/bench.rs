@@ -352,7 +352,7 @@ pub fn external_timing(tick: &dyn Fn()) -> Result<Vec<ExternalTiming>> {
             )
         })
         .collect::<Result<Vec<_>>>()?;
-    let mut times = vec![[Vec::with_capacity(EXTERNAL_REPEATS), Vec::new()]; rows.len()];
+    let mut times = vec![[Vec::new(), Vec::new()]; rows.len()];
     let mut cors = vec![[f64::NAN; 2]; rows.len()];
     for _ in 0..EXTERNAL_REPEATS {
         for (i, prony) in pronys.iter().enumerate() {

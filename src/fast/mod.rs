@@ -57,7 +57,8 @@
 //! [`FAST_END_NEAR`] steps of the end the step lengths follow that model, calibrated on the
 //! step just accepted, and the last one is planned to reach `t_1 = 0` (then fitted to end
 //! there, by the end located on each attempt's polynomial, or by bisection between the longest
-//! attempt that stopped short and the shortest that crossed when that leaves them). Newton stops after one correction when an estimate of the next one (compression: a
+//! attempt that stopped short and the shortest that crossed when that leaves them).
+//! Newton stops after one correction when an estimate of the next one (compression: a
 //! bound from the second derivative of `d^(3/2)`; restitution: the second-order remainder of
 //! the force at each node as a function of the shift of `Φ`, `d²F/dΦ² = 4 / (sqrt(d(t_1)) G_eq)`)
 //! is below its stop level; a Ting root is taken from one Newton step by the same remainder.
@@ -148,8 +149,9 @@ pub const FAST_ROOT_LEVEL: f64 = 1e-3;
 /// terms decay factorially, so the first omitted one bounds the error.
 pub const FAST_SERIES_LEVEL: f64 = 1e-5;
 /// A Ting root is also taken from one Newton step once the force there, moved to first order,
-/// is exact to this fraction of the restitution step's velocity tolerance divided by the step
-/// length (a force error `δF` over a step of length `h` moves the velocity by about `h δF`).
+/// is exact to this fraction of [`FAST_TOL_FACTOR`]` rtol` times the step's velocity scale
+/// (`rest_velocity_scale`), divided by the step length (a force error `δF` over a step of
+/// length `h` moves the velocity by about `h δF`).
 /// The relative rule of [`FAST_ROOT_LEVEL`] alone asked far more where the force is small (the
 /// slow tail of a strongly dissipative rebound). Measured: 6% fewer evaluations at rtol 1e-6
 /// on the external rows with CoR below 0.1, the same maximum errors.
@@ -1759,7 +1761,8 @@ const TURN_LAYER_TARGET: f64 = 0.3;
 /// (`λ_k TURN_LAYER_SATURATION > TURN_LAYER_TARGET`) limits the step to `x tau_k` with
 /// `λ_k TURN_LAYER_MISS x^10 = TURN_LAYER_TARGET`. Before, the step was found by rejections,
 /// about 35 evaluations each: 1.6 per impact with CoR below 0.01 and 1.2 for CoR in
-/// `[0.01, 0.1)`, now 0.5 and 0.3 (rtol 1e-6, external rows).
+/// `[0.01, 0.1)`, now 0.5 and 0.3 (rtol 1e-6, external rows; 0.2 and 0.04 together with
+/// [`FAST_REST_TOL_FACTOR`]).
 fn turn_layer_step(s: &Solver, h: f64, q_m: &[f64; KMAX], tol: f64) -> f64 {
     let mut h = h;
     for k in 0..s.k {
