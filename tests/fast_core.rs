@@ -281,21 +281,22 @@ fn errors_are_reported() {
     ));
 }
 
-/// Log-uniform random groups far beyond the paper's range: always a finite CoR in (0, 1].
-#[test]
-fn wide_random_sweep_without_nan() {
-    let mut seed: u64 = 0x9e37_79b9_7f4a_7c15;
+/// Log-uniform random groups far beyond the paper's range (`nu` in (-0.99, 0.5], `p2` and `p3`
+/// in [1e-6, 1e6]), `n` per rtol of `rtols`: always a finite CoR in (0, 1 + 10 rtol] and finite
+/// outputs (every 7th solve with its history).
+fn wide_random_sweep(seed: u64, n: usize, rtols: &[f64]) {
+    let mut seed = seed;
     let mut rnd = || {
         seed ^= seed << 13;
         seed ^= seed >> 7;
         seed ^= seed << 17;
         (seed >> 11) as f64 / (1u64 << 53) as f64
     };
-    for i in 0..400 {
+    for i in 0..n * rtols.len() {
         let nu = -0.99 + 1.49 * rnd();
         let p2 = 10f64.powf(-6.0 + 12.0 * rnd());
         let p3 = 10f64.powf(-6.0 + 12.0 * rnd());
-        let rtol = [1e-3, 1e-6, 1e-10][i % 3];
+        let rtol = rtols[i % rtols.len()];
         let prony = canonical(nu, p2, p3);
         let out = fast::impact(&prony, rtol, i % 7 == 0)
             .unwrap_or_else(|e| panic!("({nu}, {p2}, {p3}) rtol {rtol:e}: {e}"));
@@ -312,6 +313,24 @@ fn wide_random_sweep_without_nan() {
             "({nu}, {p2}, {p3}): e = {}",
             out.cor
         );
+    }
+}
+
+#[test]
+fn wide_random_sweep_without_nan() {
+    wide_random_sweep(0x9e37_79b9_7f4a_7c15, 134, &[1e-3, 1e-6, 1e-10]);
+}
+
+/// The stress run quoted in the `fast` module docs: 330 000 solves, three seeds, every rtol
+/// from 1e-2 to 1e-12 (about 20 s in a release build).
+#[test]
+#[ignore = "stress, release build: cargo test --release --test fast_core -- --ignored wide_random_stress"]
+fn wide_random_stress() {
+    let rtols = [
+        1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12,
+    ];
+    for seed in [0x9e37_79b9_7f4a_7c15, 12_345, 987_654_321] {
+        wide_random_sweep(seed, 10_000, &rtols);
     }
 }
 

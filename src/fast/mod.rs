@@ -92,7 +92,7 @@
 //! `(t_end - t)^(3/2)`, is less accurate (at most 2.0e-5 at `rtol = 1e-6` and 2.6e-10 at 1e-10
 //! on the external tables, `mdr-impact validate`). No error and no NaN in 330 000 solves of
 //! random groups with `p2`, `p3` in `[1e-6, 1e6]` and `nu` in `(-0.99, 0.5]` at every rtol from
-//! 1e-2 to 1e-12 (a throwaway harness).
+//! 1e-2 to 1e-12 (`wide_random_stress` in `tests/fast_core.rs`, ignored).
 //! Cost on the 765 external rows (`tests/fast_xcheck.rs`, ignored): 15.9 and 64 steps on
 //! average at `rtol = 1e-6` and `1e-10` (26.9 and about 100 with the absolute tolerance and
 //! second solves before), 114 and 382 history and force evaluations (145 and 452 before the
