@@ -1,7 +1,7 @@
 //! Work-precision sweep of the reference impact solver over the paper's parameter box
 //! (slow: run with `cargo test --release --test theory_grid -- --ignored --nocapture`).
-//! Prints the median / max time per impact and, when `/work/xcheck/cor_ref.csv` exists (an
-//! independent table, not part of the repository), the largest relative CoR difference to it.
+//! Prints the median / max time per impact. The cross-check against the independent tables is
+//! `tests/external_reference.rs` (committed tables, every row asserted).
 
 use mdr_impact::theory::reference::impact;
 use mdr_impact::Groups;
@@ -36,52 +36,5 @@ fn grid_timing_and_estimates() {
         times.len(),
         times[times.len() / 2],
         times[times.len() - 1]
-    );
-}
-
-/// Cross-check against the independent Python table when present (does nothing otherwise, and
-/// says so).
-#[test]
-#[ignore = "needs /work/xcheck/cor_ref.csv (external)"]
-fn cross_check_python_table() {
-    let Ok(text) = std::fs::read_to_string("/work/xcheck/cor_ref.csv") else {
-        println!("no /work/xcheck/cor_ref.csv: skipped");
-        return;
-    };
-    let mut lines = text.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let col = |n: &str| header.iter().position(|h| h.trim() == n).unwrap();
-    let (cn, c2, c3, ce, ct, cd) = (
-        col("nu"),
-        col("p2"),
-        col("p3"),
-        col("cor"),
-        col("contact_time"),
-        col("max_indentation"),
-    );
-    let (mut max_e, mut max_t, mut max_d, mut n) = (0.0f64, 0.0f64, 0.0f64, 0);
-    let mut worst = (0.0, 0.0, 0.0);
-    for l in lines {
-        let v: Vec<f64> = l
-            .split(',')
-            .map(|x| x.trim().parse().unwrap_or(f64::NAN))
-            .collect();
-        let pr = Groups::new(v[cn], v[c2], v[c3])
-            .unwrap()
-            .canonical_material()
-            .unwrap()
-            .equivalent_relaxation();
-        let o = impact(&pr, 1e-11, false).unwrap();
-        let de = ((o.cor - v[ce]) / v[ce]).abs();
-        if de > max_e {
-            max_e = de;
-            worst = (v[cn], v[c2], v[c3]);
-        }
-        max_t = max_t.max(((o.contact_time - v[ct]) / v[ct]).abs());
-        max_d = max_d.max(((o.max_indentation - v[cd]) / v[cd]).abs());
-        n += 1;
-    }
-    println!(
-        "{n} rows: max rel diff cor {max_e:.2e} (at {worst:?}), contact time {max_t:.2e}, max indentation {max_d:.2e}"
     );
 }
