@@ -61,7 +61,10 @@
 //! Newton stops after one correction when an estimate of the next one (compression: a
 //! bound from the second derivative of `d^(3/2)`; restitution: the second-order remainder of
 //! the force at each node as a function of the shift of `Φ`, `d²F/dΦ² = 4 / (sqrt(d(t_1)) G_eq)`)
-//! is below its stop level; a Ting root is taken from one Newton step by the same remainder.
+//! is below its stop level, first as a bound `h² |A| |remainder|`, then, if that fails, as the
+//! correction the remainder causes through the step's Newton system (`remainder_correction`:
+//! the bound ignores the damping by `(I + h² A J)^-1`, which is strong where the force is
+//! stiff in `d` over the step); a Ting root is taken from one Newton step by the same remainder.
 //! In restitution both stops also have absolute floors from the step's velocity tolerance
 //! ([`FAST_ROOT_STEP_LEVEL`]; the Newton scale is at least that velocity times the step
 //! length), so that the slow tail of a strongly dissipative rebound, where the force is tiny,
@@ -89,20 +92,22 @@
 //! 1e-10 (that reference is good to about 1e-10 for the smallest CoRs). Against the
 //! brute-force integration in `tests/fast_independent.rs`: within 8.3e-10 at `rtol = 1e-8`.
 //! `rtol` governs the CoR; the contact time, located where the force vanishes like
-//! `(t_end - t)^(3/2)`, is less accurate (at most 2.0e-5 at `rtol = 1e-6` and 2.6e-10 at 1e-10
+//! `(t_end - t)^(3/2)`, is less accurate (at most 1.7e-5 at `rtol = 1e-6` and 2.8e-10 at 1e-10
 //! on the external tables, `mdr-impact validate`). No error and no NaN in 330 000 solves of
 //! random groups with `p2`, `p3` in `[1e-6, 1e6]` and `nu` in `(-0.99, 0.5]` at every rtol from
 //! 1e-2 to 1e-12 (`wide_random_stress` in `tests/fast_core.rs`, ignored).
-//! Cost on the 765 external rows (`tests/fast_xcheck.rs`, ignored): 15.9 and 64 steps on
-//! average at `rtol = 1e-6` and `1e-10` (26.9 and about 100 with the absolute tolerance and
-//! second solves before), 114 and 382 history and force evaluations (145 and 452 before the
-//! restitution changes of the second 2026-11-22 session: absolute Newton and root floors,
-//! node-by-node guesses, the turn layer step and [`FAST_REST_TOL_FACTOR`]; for CoR below 0.01
-//! 400 -> 273), 129 M instructions for the 660 rows of `cor_python.csv` at 1e-6 (203 M before
-//! those changes, 369 M before the energy-scaled tolerance).
+//! Cost on the 765 external rows (`tests/fast_xcheck.rs`, ignored): 15.7 and 64 steps on
+//! average at `rtol = 1e-6` and `1e-10` (26.9 and about 100 with an absolute tolerance and
+//! second solves), 104 and 379 history and force evaluations (145 and 452 without the
+//! absolute Newton and root floors of the restitution, the node-by-node guesses, the turn
+//! layer step and [`FAST_REST_TOL_FACTOR`]; 114 and 382 without `remainder_correction` and
+//! [`FAST_END_RECEDE`]), 129 M instructions for the 660 rows of `cor_python.csv` at 1e-6
+//! (203 M and 369 M without those restitution changes and the energy-scaled tolerance); on
+//! the 114 rows with CoR below 0.1, 209 evaluations and 46 M instructions (233 and 49 M
+//! without `remainder_correction` and [`FAST_END_RECEDE`]).
 //! The largest shares are the Ting roots of the restitution (dense evaluations of the
 //! compression history), the exact kernels (`exp`, `Ĵ`) and the 5x5 Newton solves. The error
-//! estimate (`cor_error_estimate`) is 3.3x (at `rtol = 1e-2`) to several thousand times the
+//! estimate (`cor_error_estimate`) is 1.3x (at `rtol = 1e-2`) to several thousand times the
 //! actual error (at 1e-6 at least 66x, median about 210), never below it on those rows.
 //!
 //! Independent of [`crate::mdr`] and [`crate::theory`]; shares only [`Prony`] with them.
@@ -185,6 +190,12 @@ pub const FAST_MIN_TOL_SCALE: f64 = 1e-3;
 pub const FAST_LAYER_WIDTH: f64 = 3.0;
 /// The end-of-contact step control takes over within this many step lengths of the end.
 pub const FAST_END_NEAR: f64 = 6.0;
+/// The end-of-contact step control is skipped after a step at whose end the predicted end of
+/// contact moved later by more than this multiple of the step (the linear prediction from `g`
+/// and `dg/dt` is then not tracking the end). Measured on the external rows with CoR below
+/// 0.1 at rtol 1e-6: the linear prediction receded by 1.1 to 1.7 steps per step over most of
+/// their restitution, which it then took in up to twice as many steps as needed.
+pub const FAST_END_RECEDE: f64 = 1.0;
 /// `κ` of the end-of-contact error model (see `end_approach`), fitted on the external table.
 pub const FAST_END_KAPPA: f64 = 0.3;
 /// Iteration cap of the fit of the last step to the end of contact.
@@ -1059,14 +1070,23 @@ impl Solver {
             if !dmax.is_finite() {
                 break;
             }
-            // F'' = (3/4) (16/3) G d^(-1/2) at most: the next correction is h^2 A F'' dmax^2 / 2
+            // F'' = (3/4) (16/3) G d^(-1/2) at most, with G the largest row sum of
+            // c_inf I + |M| (the glassy modulus used before overstated a term relaxing within
+            // the step by about h / tau_k): the next correction is h^2 A F'' dmax^2 / 2
             let mut dmin = f64::INFINITY;
+            let mut g_row: f64 = 0.0;
             for i in 0..S {
                 dmin = dmin.min(dfix[i] + z[i]);
+                g_row = g_row.max(m[i].iter().map(|x| x.abs()).sum::<f64>());
             }
-            let curv = 0.5 * h2 * 0.75 * K16 * self.glassy / dmin.max(0.0).sqrt();
+            let curv = 0.5 * h2 * 0.75 * K16 * (self.c_inf + g_row) / dmin.max(0.0).sqrt();
             if newton_done(dmax, scale, prev, self.rtol)
                 || quadratic_done(dmax, scale, curv, self.rtol)
+                || next_correction_done(
+                    compression_remainder(&b.a_inv, &jf, h2, &m, self.c_inf, &dfix, &z, &delta),
+                    scale,
+                    self.rtol,
+                )
             {
                 converged = true;
                 break;
@@ -1391,6 +1411,7 @@ impl Solver {
             // is about h^2 |A| F_ψψ ψ^2 / 2.
             let df = linalg::mul_vec(&jf, &delta);
             let mut rem: f64 = 0.0;
+            let mut rem_f = [0.0; S];
             for i in 0..S {
                 let r = &roots[i];
                 if r.t1 <= 0.0 || r.v1 <= 0.0 || r.g <= 0.0 || r.d1 <= 0.0 {
@@ -1401,10 +1422,16 @@ impl Solver {
                     psi += cn[i][j] * delta[j];
                 }
                 t1[i] = r.t1 + psi / (r.v1 * r.g);
-                rem = rem.max(2.0 * psi * psi / (r.d1.sqrt() * r.g));
+                rem_f[i] = 2.0 * psi * psi / (r.d1.sqrt() * r.g);
+                rem = rem.max(rem_f[i]);
             }
             converged = newton_done(dmax, scale, prev, self.rtol)
-                || next_correction_done(h2 * b.a_norm * rem, scale, self.rtol);
+                || next_correction_done(h2 * b.a_norm * rem, scale, self.rtol)
+                || next_correction_done(
+                    remainder_correction(&b.a_inv, &jf, h2, &rem_f),
+                    scale,
+                    self.rtol,
+                );
             prev = dmax;
             if converged {
                 // the last correction is at the accuracy floor: move the forces to first order
@@ -1641,6 +1668,53 @@ fn newton_correction(
     })
 }
 
+/// Size of the Newton correction that a force remainder `rem_f` (at the nodes) causes:
+/// `max |δ|` with `(A^-1 + h^2 J) δ = h^2 rem_f`, the system of [`newton_correction`].
+///
+/// The bound `h^2 |A| |rem_f|` ignores `(I + h^2 A J)^-1`, which damps the remainder wherever
+/// the force is stiff in `d` over the step (`h^2 A J` large): measured on strongly dissipative
+/// rebounds, the bound was 50x to 600x the correction that followed, and this estimate within
+/// about 10x of it on either side. Infinite if the matrix is singular (no stop).
+fn remainder_correction(a_inv: &Mat<S>, jf: &Mat<S>, h2: f64, rem_f: &[f64; S]) -> f64 {
+    let mut jac = *a_inv;
+    for (row, jrow) in jac.iter_mut().zip(jf) {
+        for (x, j) in row.iter_mut().zip(jrow) {
+            *x += h2 * j;
+        }
+    }
+    match linalg::solve(jac, std::array::from_fn(|i| h2 * rem_f[i])) {
+        Some(d) => d.iter().fold(0.0, |acc: f64, x| acc.max(x.abs())),
+        None => f64::INFINITY,
+    }
+}
+
+/// [`remainder_correction`] of a compression step after the correction `delta` to `z`: the
+/// second-order remainder of the forces `(16/3) (c_inf I + M) W'' delta^2 / 2` with
+/// `W'' = (3/4) D^(-1/2)` at the nodes `D = dfix + z`.
+#[allow(clippy::too_many_arguments)]
+fn compression_remainder(
+    a_inv: &Mat<S>,
+    jf: &Mat<S>,
+    h2: f64,
+    m: &Mat<S>,
+    c_inf: f64,
+    dfix: &[f64; S],
+    z: &[f64; S],
+    delta: &[f64; S],
+) -> f64 {
+    let w2: [f64; S] = std::array::from_fn(|j| {
+        0.375 * delta[j] * delta[j] / (dfix[j] + z[j]).max(f64::MIN_POSITIVE).sqrt()
+    });
+    let rem_f = std::array::from_fn(|i| {
+        let mut acc = c_inf * w2[i];
+        for j in 0..S {
+            acc += m[i][j] * w2[j];
+        }
+        K16 * acc
+    });
+    remainder_correction(a_inv, jf, h2, &rem_f)
+}
+
 /// Add a Newton correction; returns `(max |delta|, max |z|)`.
 fn update(z: &mut [f64; S], delta: &[f64; S]) -> (f64, f64) {
     let mut dmax: f64 = 0.0;
@@ -1823,7 +1897,7 @@ fn step_factor_order(ratio: f64, order: f64) -> f64 {
 /// [`crate::tolerances`]); `history` asks for `(t, d, v, F, a)` at the step ends. The outcome
 /// is canonical: `rebound_velocity = cor`, `dissipated_energy = (1 - e^2)/2`,
 /// `max_contact_radius = sqrt(d_max)`, solver `"fast"`. `cor_error_estimate` is the sum of the
-/// accepted local error estimates divided by `e` (12.8x to a few thousand times the actual
+/// accepted local error estimates divided by `e` (1.3x to a few thousand times the actual
 /// error on the external tables, never below it); `max_force` is the largest node force,
 /// refined by a parabola through its neighbours; `work.steps` counts attempted steps and
 /// `work.evaluations` force and history evaluations, of both solves when a small CoR is solved
@@ -2208,6 +2282,8 @@ fn restitute(s: &mut Solver, turn: Turn, prec: f64) -> Result<Outcome> {
     // last step); the steps before it stop short of that last step instead of trying again
     let mut end_plan: Option<(f64, f64)> = None;
     let (v_end, t_end);
+    // the end of contact predicted after the last accepted step (see FAST_END_RECEDE)
+    let mut end_predicted = f64::INFINITY;
     loop {
         steps += 1;
         if steps > FAST_MAX_STEPS {
@@ -2392,7 +2468,13 @@ fn restitute(s: &mut Solver, turn: Turn, prec: f64) -> Result<Outcome> {
             }
             if dg < 0.0 && g1 > 0.0 {
                 let delta = -g1 / dg;
-                if delta < FAST_END_NEAR * h {
+                // a prediction that moved later by more than the step just taken is not
+                // a distance to the end: in the slow tail of a strongly dissipative rebound
+                // g decays like a relaxation and its tangent meets zero one relaxation time
+                // ahead, wherever the step is
+                let receded = t + delta - end_predicted;
+                end_predicted = t + delta;
+                if delta < FAST_END_NEAR * h && receded <= FAST_END_RECEDE * h_done {
                     let (next, last) = end_approach(ratio.max(1e-3), h_done, delta);
                     h = next.min(h);
                     if last {
