@@ -1658,16 +1658,23 @@ fn newton_correction(
     r: [f64; S],
     what: &'static str,
 ) -> Result<[f64; S]> {
+    linalg::solve(newton_matrix(a_inv, jf, h2), linalg::mul_vec(a_inv, &r)).ok_or(
+        Error::NoConvergence {
+            what,
+            iterations: 0,
+        },
+    )
+}
+
+/// The matrix `A^-1 + h^2 J` of a step's Newton system.
+fn newton_matrix(a_inv: &Mat<S>, jf: &Mat<S>, h2: f64) -> Mat<S> {
     let mut jac = *a_inv;
     for (row, jrow) in jac.iter_mut().zip(jf) {
         for (x, j) in row.iter_mut().zip(jrow) {
             *x += h2 * j;
         }
     }
-    linalg::solve(jac, linalg::mul_vec(a_inv, &r)).ok_or(Error::NoConvergence {
-        what,
-        iterations: 0,
-    })
+    jac
 }
 
 /// Size of the Newton correction that a force remainder `rem_f` (at the nodes) causes:
@@ -1680,13 +1687,8 @@ fn newton_correction(
 /// estimate within 5% of it. On a stiff row's compression, the glassy-modulus bound used before
 /// was about 250x the correction that followed. Infinite if the matrix is singular (no stop).
 fn remainder_correction(a_inv: &Mat<S>, jf: &Mat<S>, h2: f64, rem_f: &[f64; S]) -> f64 {
-    let mut jac = *a_inv;
-    for (row, jrow) in jac.iter_mut().zip(jf) {
-        for (x, j) in row.iter_mut().zip(jrow) {
-            *x += h2 * j;
-        }
-    }
-    match linalg::solve(jac, std::array::from_fn(|i| h2 * rem_f[i])) {
+    let rhs = std::array::from_fn(|i| h2 * rem_f[i]);
+    match linalg::solve(newton_matrix(a_inv, jf, h2), rhs) {
         Some(d) => d.iter().fold(0.0, |acc: f64, x| acc.max(x.abs())),
         None => f64::INFINITY,
     }
