@@ -3,7 +3,8 @@
 //! `XREPS` runs, default 9), and consistency of histories. Env: `XRTOL` (that rtol only, bound `max(rtol, 1e-9)`),
 //! `XDUMP` (append `rtol,row,cor,cor_ref,steps,time_us,nu,p2,p3,levels,error_estimate` to a
 //! file),
-//! `XROWS` (a CSV `nu,p2,p3,cor,...` to check instead of the external table).
+//! `XROWS` (a CSV `nu,p2,p3,cor,...` to check instead of the external table),
+//! `XCOR_BELOW` (only the rows whose reference CoR is below this value).
 //! `cargo test --release --test fast_xcheck -- --ignored --nocapture`
 use mdr_impact::validate::external_rows;
 use mdr_impact::{fast, Groups, Impact};
@@ -45,6 +46,13 @@ fn xcheck() {
                 cor: r.cor,
             })
             .collect(),
+    };
+    let rows: Vec<Row> = match std::env::var("XCOR_BELOW") {
+        Ok(v) => {
+            let below: f64 = v.parse().unwrap();
+            rows.into_iter().filter(|r| r.cor < below).collect()
+        }
+        Err(_) => rows,
     };
     let pr: Vec<_> = rows
         .iter()

@@ -102,9 +102,10 @@
 //! absolute Newton and root floors of the restitution, the node-by-node guesses, the turn
 //! layer step and [`FAST_REST_TOL_FACTOR`]; 114 and 382 without `remainder_correction` and
 //! [`FAST_END_RECEDE`]), 129 M instructions for the 660 rows of `cor_python.csv` at 1e-6
-//! (203 M and 369 M without those restitution changes and the energy-scaled tolerance); on
-//! the 114 rows with CoR below 0.1, 209 evaluations and 46 M instructions (233 and 49 M
-//! without `remainder_correction` and [`FAST_END_RECEDE`]).
+//! (203 M and 369 M without those restitution changes and the energy-scaled tolerance, all
+//! instruction counts by callgrind on that test); on the 114 rows with CoR below 0.1
+//! (`XCOR_BELOW=0.1`), 209 evaluations and 46 M instructions (233 and 49 M without
+//! `remainder_correction` and [`FAST_END_RECEDE`]).
 //! The largest shares are the Ting roots of the restitution (dense evaluations of the
 //! compression history), the exact kernels (`exp`, `Ĵ`) and the 5x5 Newton solves. The error
 //! estimate (`cor_error_estimate`) is 1.3x (at `rtol = 1e-2`) to several thousand times the
