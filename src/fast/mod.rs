@@ -1683,10 +1683,10 @@ fn newton_matrix(a_inv: &Mat<S>, jf: &Mat<S>, h2: f64) -> Mat<S> {
 /// `max |δ|` with `(A^-1 + h^2 J) δ = h^2 rem_f`, the system of [`newton_correction`].
 ///
 /// The bound `h^2 |A| |rem_f|` ignores `(I + h^2 A J)^-1`, which damps the remainder wherever
-/// the force is stiff in `d` over the step (`h^2 A J` large). Measured on the restitution of a
-/// strongly dissipative row (CoR 1.6e-3, rtol 1e-6), over steps whose second Newton correction
-/// ranged from 0.1 to 30 times the stop level: the bound was 40x to 75x that correction, this
-/// estimate within 5% of it. On a stiff row's compression, the glassy-modulus bound used before
+/// the force is stiff in `d` over the step (`h^2 A J` large). Measured in instrumented solves
+/// of the restitution of a strongly dissipative row (CoR 1.6e-3, rtol 1e-6), over steps whose
+/// second Newton correction ranged from 0.1 to 30 times the stop level: the bound was 40x to
+/// 75x that correction, this estimate within 5% of it. On a stiff row's compression, the glassy-modulus bound used before
 /// was about 250x the correction that followed. Infinite if the matrix is singular (no stop).
 fn remainder_correction(a_inv: &Mat<S>, jf: &Mat<S>, h2: f64, rem_f: &[f64; S]) -> f64 {
     let rhs = std::array::from_fn(|i| h2 * rem_f[i]);
