@@ -272,20 +272,7 @@ pub fn summary(
             }
         }
     }
-    // speed-up at equal accuracy: the cheapest setting of each solver whose worst CoR error over
-    // the cases is at most 1e-4
-    let cheapest = |solver: SolverKind| {
-        sweep(false)
-            .into_iter()
-            .filter(|(k, _)| *k == solver)
-            .flat_map(|(_, rtols)| rtols)
-            .filter_map(|rtol| aggregate(points, solver, rtol))
-            .filter(|&(_, e, _)| e <= 1e-4)
-            .map(|(t, _, _)| t)
-            .fold(f64::INFINITY, f64::min)
-    };
-    let (euler, fast) = (cheapest(SolverKind::MdrEuler), cheapest(SolverKind::Fast));
-    if euler.is_finite() && fast.is_finite() {
+    if let Some((euler, fast)) = cheapest_pair(points) {
         let _ = writeln!(
             s,
             "\nAt equal accuracy (worst CoR error over the cases at most 1e-4, cheapest setting of each): \
@@ -300,7 +287,8 @@ pub fn summary(
             s,
             "\n`fast` on every row of the external tables (the paper's range and its most \
              dissipative corner; one core, CoR only, median of {EXTERNAL_REPEATS} solves per row, \
-             one per pass over all rows; \
+             one per pass over all rows; steps / evaluations: the mean attempted steps and force \
+             and history evaluations of one solve, which do not depend on the machine; \
              data: [`validation/bench_external.csv`](validation/bench_external.csv)):\n"
         );
         s.push_str(&external_summary(rows));
@@ -311,6 +299,101 @@ pub fn summary(
             "\n`mdr-impact cor --input` path (`batch::solve_rows`, default solver and rtol 1e-6, all cores): \
              {rows} random rows of the paper's range in {secs:.2} s."
         );
+    }
+    if let Some(rows) = external {
+        s.push('\n');
+        s.push_str(&targets(rows, speedup(points), batch));
+    }
+    s
+}
+
+/// The cheapest `mdr-euler` and `fast` settings (geometric-mean median time, s) whose worst CoR
+/// error over the cases is at most 1e-4: the comparison at equal accuracy.
+fn cheapest_pair(points: &[BenchPoint]) -> Option<(f64, f64)> {
+    let cheapest = |solver: SolverKind| {
+        sweep(false)
+            .into_iter()
+            .filter(|(k, _)| *k == solver)
+            .flat_map(|(_, rtols)| rtols)
+            .filter_map(|rtol| aggregate(points, solver, rtol))
+            .filter(|&(_, e, _)| e <= 1e-4)
+            .map(|(t, _, _)| t)
+            .fold(f64::INFINITY, f64::min)
+    };
+    let (euler, fast) = (cheapest(SolverKind::MdrEuler), cheapest(SolverKind::Fast));
+    (euler.is_finite() && fast.is_finite()).then_some((euler, fast))
+}
+
+/// `mdr-euler` time over `fast` time at equal accuracy ([`cheapest_pair`]), if both reached it.
+pub fn speedup(points: &[BenchPoint]) -> Option<f64> {
+    cheapest_pair(points).map(|(euler, fast)| euler / fast)
+}
+
+/// Design targets of `fast` (checked by [`targets`]): median CoR-only time per impact in every
+/// group of [`external_groups`] at rtol 1e-6 and 1e-10 (s).
+pub const TARGET_MEDIAN_SECONDS: [f64; 2] = [20e-6, 200e-6];
+/// Design target: `mdr-euler` time over `fast` time at equal CoR error (at most 1e-4).
+pub const TARGET_SPEEDUP: f64 = 1000.0;
+/// Design target: `cor --input` rows at rtol 1e-6 and the wall time allowed for them (s).
+pub const TARGET_BATCH: (usize, f64) = (100_000, 2.0);
+
+/// A list stating which design targets this run met and which it did not (with the measured
+/// values): [`TARGET_MEDIAN_SECONDS`] per group of rows, [`TARGET_SPEEDUP`] and
+/// [`TARGET_BATCH`] (when measured).
+pub fn targets(
+    rows: &[ExternalTiming],
+    speedup: Option<f64>,
+    batch: Option<(usize, f64)>,
+) -> String {
+    let stats = group_stats(rows);
+    let mut parts = Vec::new();
+    for (k, (&rtol, &limit)) in EXTERNAL_RTOLS
+        .iter()
+        .zip(&TARGET_MEDIAN_SECONDS)
+        .enumerate()
+    {
+        let missed: Vec<String> = stats
+            .iter()
+            .filter(|g| g.median[k] > limit)
+            .map(|g| format!("{} ({})", g.name, fmt_time(g.median[k])))
+            .collect();
+        let verdict = if missed.is_empty() {
+            format!("met in all {} groups", stats.len())
+        } else {
+            format!(
+                "met in {} of {} groups, **not met** in {}",
+                stats.len() - missed.len(),
+                stats.len(),
+                missed.join(", ")
+            )
+        };
+        parts.push(format!(
+            "median at most {} at rtol {rtol:.0e}: {verdict}",
+            fmt_time(limit)
+        ));
+    }
+    if let Some(x) = speedup {
+        let verdict = if x >= TARGET_SPEEDUP {
+            "met"
+        } else {
+            "**not met**"
+        };
+        parts.push(format!(
+            "at least {TARGET_SPEEDUP:.0}x less time than `mdr-euler` at equal CoR error: {verdict} ({x:.0}x)"
+        ));
+    }
+    if let Some((n, secs)) = batch {
+        let (want, limit) = TARGET_BATCH;
+        if n >= want {
+            let verdict = if secs <= limit { "met" } else { "**not met**" };
+            parts.push(format!(
+                "{want} rows through `cor --input` in at most {limit} s: {verdict} ({n} rows in {secs:.2} s)"
+            ));
+        }
+    }
+    let mut s = String::from("Design targets of `fast`, checked in this run:\n\n");
+    for p in parts {
+        let _ = writeln!(s, "- {p}.");
     }
     s
 }
@@ -324,6 +407,11 @@ pub struct ExternalTiming {
     pub seconds: [f64; 2],
     /// Relative CoR error against the row's reference at rtol 1e-6 and 1e-10.
     pub cor_error: [f64; 2],
+    /// Attempted steps of one solve at rtol 1e-6 and 1e-10 (`Work::steps`; the same on every
+    /// repeat: the solver is deterministic).
+    pub steps: [u64; 2],
+    /// Force and history evaluations of one solve at rtol 1e-6 and 1e-10 (`Work::evaluations`).
+    pub evaluations: [u64; 2],
 }
 
 /// The two accuracies of [`ExternalTiming`].
@@ -354,6 +442,7 @@ pub fn external_timing(tick: &dyn Fn()) -> Result<Vec<ExternalTiming>> {
         .collect::<Result<Vec<_>>>()?;
     let mut times = vec![[Vec::new(), Vec::new()]; rows.len()];
     let mut cors = vec![[f64::NAN; 2]; rows.len()];
+    let mut work = vec![[(0u64, 0u64); 2]; rows.len()];
     for _ in 0..EXTERNAL_REPEATS {
         for (i, prony) in pronys.iter().enumerate() {
             for (k, &rtol) in EXTERNAL_RTOLS.iter().enumerate() {
@@ -361,14 +450,15 @@ pub fn external_timing(tick: &dyn Fn()) -> Result<Vec<ExternalTiming>> {
                 let o = crate::fast::impact(prony, rtol, false)?;
                 times[i][k].push(t0.elapsed().as_secs_f64());
                 cors[i][k] = o.cor;
+                work[i][k] = (o.work.steps, o.work.evaluations);
             }
             tick();
         }
     }
     Ok(rows
         .into_iter()
-        .zip(times.iter_mut().zip(&cors))
-        .map(|(row, (t, cor))| {
+        .zip(times.iter_mut().zip(cors.iter().zip(&work)))
+        .map(|(row, (t, (cor, work)))| {
             let median = |v: &mut Vec<f64>| {
                 v.sort_by(|a, b| a.total_cmp(b));
                 v[v.len() / 2]
@@ -379,6 +469,8 @@ pub fn external_timing(tick: &dyn Fn()) -> Result<Vec<ExternalTiming>> {
                 row,
                 seconds,
                 cor_error,
+                steps: work.map(|w| w.0),
+                evaluations: work.map(|w| w.1),
             }
         })
         .collect())
@@ -414,6 +506,10 @@ pub fn write_external_csv(path: &Path, rows: &[ExternalTiming]) -> Result<()> {
             "cor_error_rtol_1e-6",
             "seconds_rtol_1e-10",
             "cor_error_rtol_1e-10",
+            "steps_rtol_1e-6",
+            "evaluations_rtol_1e-6",
+            "steps_rtol_1e-10",
+            "evaluations_rtol_1e-10",
         ])
         .map_err(io)?;
         for t in rows {
@@ -428,7 +524,12 @@ pub fn write_external_csv(path: &Path, rows: &[ExternalTiming]) -> Result<()> {
                     t.seconds[1],
                     t.cor_error[1],
                 ]
-                .map(|x| format!("{x:e}")),
+                .map(|x| format!("{x:e}"))
+                .into_iter()
+                .chain(
+                    [t.steps[0], t.evaluations[0], t.steps[1], t.evaluations[1]]
+                        .map(|n| n.to_string()),
+                ),
             )
             .map_err(io)?;
         }
@@ -436,31 +537,66 @@ pub fn write_external_csv(path: &Path, rows: &[ExternalTiming]) -> Result<()> {
     })
 }
 
-/// Markdown table: per group, rows, median time and max CoR error at each accuracy.
-pub fn external_summary(rows: &[ExternalTiming]) -> String {
-    let mut s = String::from(
-        "| rows of the external tables | n | rtol 1e-6: median time | max CoR error | rtol 1e-10: median time | max CoR error |\n| --- | --- | --- | --- | --- | --- |\n",
-    );
+/// One group of [`external_groups`]: its rows' median time, worst CoR error and mean work at
+/// each accuracy of [`EXTERNAL_RTOLS`].
+struct GroupStats {
+    name: &'static str,
+    n: usize,
+    median: [f64; 2],
+    max_error: [f64; 2],
+    steps: [f64; 2],
+    evaluations: [f64; 2],
+}
+
+/// [`GroupStats`] of every group of [`external_groups`] that has rows.
+fn group_stats(rows: &[ExternalTiming]) -> Vec<GroupStats> {
+    let mut out = Vec::new();
     for (name, member) in external_groups() {
         let sel: Vec<&ExternalTiming> = rows.iter().filter(|t| member(&t.row)).collect();
         if sel.is_empty() {
             continue;
         }
+        let n = sel.len() as f64;
         let median = |k: usize| {
             let mut v: Vec<f64> = sel.iter().map(|t| t.seconds[k]).collect();
             v.sort_by(|a, b| a.total_cmp(b));
             v[v.len() / 2]
         };
         let max_err = |k: usize| sel.iter().map(|t| t.cor_error[k]).fold(0.0, f64::max);
-        let _ = writeln!(
-            s,
-            "| {name} | {} | {} | {:.1e} | {} | {:.1e} |",
-            sel.len(),
-            fmt_time(median(0)),
-            max_err(0),
-            fmt_time(median(1)),
-            max_err(1)
-        );
+        let steps = |k: usize| sel.iter().map(|t| t.steps[k] as f64).sum::<f64>() / n;
+        let evals = |k: usize| sel.iter().map(|t| t.evaluations[k] as f64).sum::<f64>() / n;
+        out.push(GroupStats {
+            name,
+            n: sel.len(),
+            median: [median(0), median(1)],
+            max_error: [max_err(0), max_err(1)],
+            steps: [steps(0), steps(1)],
+            evaluations: [evals(0), evals(1)],
+        });
+    }
+    out
+}
+
+/// Markdown table: per group, rows, and at each accuracy the median time, the max CoR error and
+/// the mean work of a solve (attempted steps / force and history evaluations; machine
+/// independent, unlike the times).
+pub fn external_summary(rows: &[ExternalTiming]) -> String {
+    let mut s = String::from(
+        "| rows of the external tables | n | rtol 1e-6: median time | max CoR error | steps / evaluations | rtol 1e-10: median time | max CoR error | steps / evaluations |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n",
+    );
+    for g in group_stats(rows) {
+        let cols: Vec<String> = (0..2)
+            .map(|k| {
+                format!(
+                    "{} | {:.1e} | {:.1} / {:.0}",
+                    fmt_time(g.median[k]),
+                    g.max_error[k],
+                    g.steps[k],
+                    g.evaluations[k]
+                )
+            })
+            .collect();
+        let _ = writeln!(s, "| {} | {} | {} | {} |", g.name, g.n, cols[0], cols[1]);
     }
     s
 }
@@ -489,4 +625,109 @@ pub fn machine() -> String {
         .unwrap_or_else(|| "unknown CPU".into());
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     format!("{cpu}, {cores} cores")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::validate::ExternalRow;
+
+    fn timing(cor: f64, steps: [u64; 2], evaluations: [u64; 2]) -> ExternalTiming {
+        ExternalTiming {
+            row: ExternalRow {
+                nu: 0.3,
+                p2: 1.0,
+                p3: 1.0,
+                cor,
+                contact_time: 1.0,
+                max_indentation: 0.5,
+                est_rel_err: 1e-12,
+            },
+            seconds: [1e-5, 5e-5],
+            cor_error: [1e-7, 1e-11],
+            steps,
+            evaluations,
+        }
+    }
+
+    #[test]
+    fn external_summary_reports_mean_work_per_group() {
+        let rows = [
+            timing(0.95, [10, 40], [60, 300]),
+            timing(0.05, [30, 90], [200, 700]),
+            timing(0.04, [20, 70], [100, 500]),
+        ];
+        let table = external_summary(&rows);
+        let line = |prefix: &str| {
+            table
+                .lines()
+                .find(|l| l.starts_with(prefix))
+                .unwrap_or_else(|| panic!("no row {prefix} in\n{table}"))
+                .to_string()
+        };
+        // means over the group's rows: (10+30+20)/3 = 20 steps, (60+200+100)/3 = 120 evaluations
+        assert!(
+            line("| all rows | 3 |").contains("| 20.0 / 120 |"),
+            "{table}"
+        );
+        assert!(
+            line("| all rows | 3 |").contains("| 66.7 / 500 |"),
+            "{table}"
+        );
+        assert!(
+            line("| strongly dissipative").contains("| 25.0 / 150 |"),
+            "{table}"
+        );
+        assert!(
+            line("| nearly elastic").contains("| 10.0 / 60 |"),
+            "{table}"
+        );
+    }
+
+    #[test]
+    fn targets_name_the_groups_that_miss_them() {
+        let mut slow = timing(0.05, [30, 90], [200, 700]);
+        slow.seconds = [40e-6, 150e-6];
+        let rows = [timing(0.95, [10, 40], [60, 300]), slow];
+        let text = targets(&rows, Some(3250.0), Some((100_000, 1.01)));
+        // all rows: median of 10 µs and 40 µs is the upper one (40 µs)
+        assert!(
+            text.contains(
+                "median at most 20.0 µs at rtol 1e-6: met in 1 of 3 groups, **not met** in \
+                 all rows (40.0 µs), strongly dissipative (e < 0.1) (40.0 µs)"
+            ),
+            "{text}"
+        );
+        assert!(
+            text.contains("at rtol 1e-10: met in all 3 groups"),
+            "{text}"
+        );
+        assert!(text.contains(": met (3250x)"), "{text}");
+        assert!(text.contains(": met (100000 rows in 1.01 s)"), "{text}");
+        let text = targets(&rows, Some(900.0), Some((1000, 0.1)));
+        assert!(text.contains("**not met** (900x)"), "{text}");
+        assert!(
+            !text.contains("cor --input"),
+            "a smaller batch is not the target: {text}"
+        );
+    }
+
+    #[test]
+    fn external_csv_has_work_columns() {
+        let dir = std::env::temp_dir().join(format!("mdr-impact-bench-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("bench_external.csv");
+        write_external_csv(&path, &[timing(0.5, [12, 45], [70, 310])]).unwrap();
+        let text = std::fs::read_to_string(&path).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        let mut lines = text.lines();
+        let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+        let values: Vec<&str> = lines.next().unwrap().split(',').collect();
+        let col = |name: &str| values[header.iter().position(|h| *h == name).unwrap()];
+        assert_eq!(col("steps_rtol_1e-6"), "12");
+        assert_eq!(col("evaluations_rtol_1e-6"), "70");
+        assert_eq!(col("steps_rtol_1e-10"), "45");
+        assert_eq!(col("evaluations_rtol_1e-10"), "310");
+        assert_eq!(col("cor_reference").parse::<f64>().unwrap(), 0.5);
+    }
 }

@@ -382,6 +382,9 @@ fn run(cli: Cli) -> Result<(), Error> {
             } else {
                 None
             };
+            if let Some(t) = &external {
+                print!("{}", bench::targets(t, bench::speedup(&points), batch));
+            }
             if !quick {
                 let existing =
                     std::fs::read_to_string(&report).map_err(|e| Error::io(&report, e))?;
