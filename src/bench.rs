@@ -238,6 +238,7 @@ pub fn summary(
     machine: &str,
     batch: Option<(usize, f64)>,
     external: Option<&[ExternalTiming]>,
+    random: Option<&[ExternalTiming]>,
 ) -> String {
     let mut s = String::new();
     let _ = writeln!(
@@ -246,7 +247,7 @@ pub fn summary(
          of a CoR-only solve (no histories), errors are against the reference solver at rtol 1e-11 \
          (outside the timed region). Data: [`validation/bench.csv`](validation/bench.csv); \
          plot: `validation/work-precision.svg`. Machine-dependent, so not part of the staleness check. \
-         Re-run: `cargo run --release -- bench --batch-rows 100000` (about a minute on this machine).\n"
+         Re-run: `cargo run --release -- bench --batch-rows 100000` (under two minutes on this machine).\n"
     );
     let _ = writeln!(s, "![work-precision](validation/work-precision.svg)\n");
     let _ = writeln!(
@@ -291,7 +292,18 @@ pub fn summary(
              and history evaluations of one solve, which do not depend on the machine; \
              data: [`validation/bench_external.csv`](validation/bench_external.csv)):\n"
         );
-        s.push_str(&external_summary(rows));
+        s.push_str(&external_summary(rows, TimedRows::External));
+    }
+    if let Some(rows) = random {
+        let _ = writeln!(
+            s,
+            "\nThe same on {} random groups of the paper's range (`nu` uniform in `(-0.99, 0.5]`, \
+             `p2` and `p3` log-uniform; seed {RANDOM_SEED}), where each regime has its share of the \
+             range; grouped by the CoR at rtol 1e-10, no reference (data: \
+             [`validation/bench_random.csv`](validation/bench_random.csv)):\n",
+            rows.len()
+        );
+        s.push_str(&external_summary(rows, TimedRows::Random));
     }
     if let Some((rows, secs)) = batch {
         let _ = writeln!(
@@ -300,9 +312,16 @@ pub fn summary(
              {rows} random rows of the paper's range in {secs:.2} s."
         );
     }
-    if let Some(rows) = external {
+    let sets: Vec<(TimedRows, &[ExternalTiming])> = [
+        external.map(|r| (TimedRows::External, r)),
+        random.map(|r| (TimedRows::Random, r)),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
+    if !sets.is_empty() {
         s.push('\n');
-        s.push_str(&targets(rows, speedup(points), batch));
+        s.push_str(&targets(&sets, speedup(points), batch));
     }
     s
 }
@@ -324,7 +343,8 @@ fn cheapest_pair(points: &[BenchPoint]) -> Option<(f64, f64)> {
     (euler.is_finite() && fast.is_finite()).then_some((euler, fast))
 }
 
-/// `mdr-euler` time over `fast` time at equal accuracy ([`cheapest_pair`]), if both reached it.
+/// `mdr-euler` time over `fast` time at equal accuracy (the cheapest setting of each whose worst
+/// CoR error over the cases is at most 1e-4), if both reached it.
 pub fn speedup(points: &[BenchPoint]) -> Option<f64> {
     cheapest_pair(points).map(|(euler, fast)| euler / fast)
 }
@@ -341,36 +361,39 @@ pub const TARGET_BATCH: (usize, f64) = (100_000, 2.0);
 /// values): [`TARGET_MEDIAN_SECONDS`] per group of rows, [`TARGET_SPEEDUP`] and
 /// [`TARGET_BATCH`] (when measured).
 pub fn targets(
-    rows: &[ExternalTiming],
+    sets: &[(TimedRows, &[ExternalTiming])],
     speedup: Option<f64>,
     batch: Option<(usize, f64)>,
 ) -> String {
-    let stats = group_stats(rows);
     let mut parts = Vec::new();
-    for (k, (&rtol, &limit)) in EXTERNAL_RTOLS
-        .iter()
-        .zip(&TARGET_MEDIAN_SECONDS)
-        .enumerate()
-    {
-        let missed: Vec<String> = stats
+    for &(kind, rows) in sets {
+        let stats = group_stats(rows);
+        for (k, (&rtol, &limit)) in EXTERNAL_RTOLS
             .iter()
-            .filter(|g| g.median[k] > limit)
-            .map(|g| format!("{} ({})", g.name, fmt_time(g.median[k])))
-            .collect();
-        let verdict = if missed.is_empty() {
-            format!("met in all {} groups", stats.len())
-        } else {
-            format!(
-                "met in {} of {} groups, **not met** in {}",
-                stats.len() - missed.len(),
-                stats.len(),
-                missed.join(", ")
-            )
-        };
-        parts.push(format!(
-            "median at most {} at rtol {rtol:.0e}: {verdict}",
-            fmt_time(limit)
-        ));
+            .zip(&TARGET_MEDIAN_SECONDS)
+            .enumerate()
+        {
+            let missed: Vec<String> = stats
+                .iter()
+                .filter(|g| g.median[k] > limit)
+                .map(|g| format!("{} ({})", g.name, fmt_time(g.median[k])))
+                .collect();
+            let verdict = if missed.is_empty() {
+                format!("met in all {} groups", stats.len())
+            } else {
+                format!(
+                    "met in {} of {} groups, **not met** in {}",
+                    stats.len() - missed.len(),
+                    stats.len(),
+                    missed.join(", ")
+                )
+            };
+            parts.push(format!(
+                "median at most {} at rtol {rtol:.0e} on the {}: {verdict}",
+                fmt_time(limit),
+                kind.title()
+            ));
+        }
     }
     if let Some(x) = speedup {
         let verdict = if x >= TARGET_SPEEDUP {
@@ -396,6 +419,41 @@ pub fn targets(
         let _ = writeln!(s, "- {p}.");
     }
     s
+}
+
+/// Which rows a timing table describes ([`external_timing`] or [`random_timing`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TimedRows {
+    /// The rows of the external reference tables, errors against their reference CoR.
+    External,
+    /// A random sample of the paper's range, differences from the rtol 1e-10 solve.
+    Random,
+}
+
+impl TimedRows {
+    /// First column of the Markdown table.
+    fn title(self) -> &'static str {
+        match self {
+            TimedRows::External => "rows of the external tables",
+            TimedRows::Random => "random rows of the paper's range",
+        }
+    }
+
+    /// Header of the error columns.
+    fn error_header(self) -> &'static str {
+        match self {
+            TimedRows::External => "max CoR error",
+            TimedRows::Random => "max CoR difference from rtol 1e-10",
+        }
+    }
+
+    /// CSV column of the CoR the errors are taken against.
+    fn cor_column(self) -> &'static str {
+        match self {
+            TimedRows::External => "cor_reference",
+            TimedRows::Random => "cor_rtol_1e-10",
+        }
+    }
 }
 
 /// Time and error of `fast` on one row of the external tables, at rtol 1e-6 and 1e-10.
@@ -429,6 +487,74 @@ pub const EXTERNAL_REPEATS: usize = 5;
 /// `tick` after every row of every pass.
 pub fn external_timing(tick: &dyn Fn()) -> Result<Vec<ExternalTiming>> {
     let rows = crate::validate::external_rows()?;
+    let timed = time_rows(&rows, tick)?;
+    Ok(rows
+        .into_iter()
+        .zip(timed)
+        .map(|(row, t)| ExternalTiming {
+            cor_error: t.cor.map(|c| ((c - row.cor) / row.cor).abs()),
+            row,
+            seconds: t.seconds,
+            steps: t.steps,
+            evaluations: t.evaluations,
+        })
+        .collect())
+}
+
+/// Rows of the random sample of the paper's range timed by [`random_timing`].
+pub const RANDOM_ROWS: usize = 5000;
+
+/// Seed of that sample (`batch::random_rows`).
+pub const RANDOM_SEED: u64 = 7;
+
+/// Time `fast` as [`external_timing`] does on `n` random groups of the paper's range
+/// (`batch::random_rows`: `nu` uniform in `(-0.99, 0.5]`, `p2` and `p3` log-uniform in
+/// `[1e-4, 1e2]` and `[1e-3, 1e4]`), a sample in which each regime has its share of the range
+/// (the external tables hold many rows of the most dissipative corner). No reference: `row.cor`
+/// is the CoR at rtol 1e-10 (within 5.0e-10 of the reference solver on 5000 random groups, see
+/// [`crate::fast`]), `cor_error[0]` the difference of the rtol 1e-6 CoR from it, `cor_error[1]`
+/// NaN.
+pub fn random_timing(n: usize, seed: u64, tick: &dyn Fn()) -> Result<Vec<ExternalTiming>> {
+    let rows: Vec<crate::validate::ExternalRow> = crate::batch::random_rows(n, seed)?
+        .iter()
+        .map(|r| crate::validate::ExternalRow {
+            nu: r.groups.nu,
+            p2: r.groups.p2,
+            p3: r.groups.p3,
+            cor: f64::NAN,
+            contact_time: f64::NAN,
+            max_indentation: f64::NAN,
+            est_rel_err: f64::NAN,
+        })
+        .collect();
+    let timed = time_rows(&rows, tick)?;
+    Ok(rows
+        .into_iter()
+        .zip(timed)
+        .map(|(row, t)| ExternalTiming {
+            row: crate::validate::ExternalRow {
+                cor: t.cor[1],
+                ..row
+            },
+            cor_error: [((t.cor[0] - t.cor[1]) / t.cor[1]).abs(), f64::NAN],
+            seconds: t.seconds,
+            steps: t.steps,
+            evaluations: t.evaluations,
+        })
+        .collect())
+}
+
+/// What [`time_rows`] measured on one row at each accuracy of [`EXTERNAL_RTOLS`].
+struct Timed {
+    seconds: [f64; 2],
+    cor: [f64; 2],
+    steps: [u64; 2],
+    evaluations: [u64; 2],
+}
+
+/// The timing loop of [`external_timing`] and [`random_timing`]: [`EXTERNAL_REPEATS`] passes
+/// over all rows, each solving every row at each accuracy; the median time per row and accuracy.
+fn time_rows(rows: &[crate::validate::ExternalRow], tick: &dyn Fn()) -> Result<Vec<Timed>> {
     let pronys = rows
         .iter()
         .map(|row| {
@@ -441,39 +567,34 @@ pub fn external_timing(tick: &dyn Fn()) -> Result<Vec<ExternalTiming>> {
         })
         .collect::<Result<Vec<_>>>()?;
     let mut times = vec![[Vec::new(), Vec::new()]; rows.len()];
-    let mut cors = vec![[f64::NAN; 2]; rows.len()];
-    let mut work = vec![[(0u64, 0u64); 2]; rows.len()];
+    let mut out: Vec<Timed> = (0..rows.len())
+        .map(|_| Timed {
+            seconds: [f64::NAN; 2],
+            cor: [f64::NAN; 2],
+            steps: [0; 2],
+            evaluations: [0; 2],
+        })
+        .collect();
     for _ in 0..EXTERNAL_REPEATS {
         for (i, prony) in pronys.iter().enumerate() {
             for (k, &rtol) in EXTERNAL_RTOLS.iter().enumerate() {
                 let t0 = Instant::now();
                 let o = crate::fast::impact(prony, rtol, false)?;
                 times[i][k].push(t0.elapsed().as_secs_f64());
-                cors[i][k] = o.cor;
-                work[i][k] = (o.work.steps, o.work.evaluations);
+                out[i].cor[k] = o.cor;
+                out[i].steps[k] = o.work.steps;
+                out[i].evaluations[k] = o.work.evaluations;
             }
             tick();
         }
     }
-    Ok(rows
-        .into_iter()
-        .zip(times.iter_mut().zip(cors.iter().zip(&work)))
-        .map(|(row, (t, (cor, work)))| {
-            let median = |v: &mut Vec<f64>| {
-                v.sort_by(|a, b| a.total_cmp(b));
-                v[v.len() / 2]
-            };
-            let seconds = [median(&mut t[0]), median(&mut t[1])];
-            let cor_error = cor.map(|c| ((c - row.cor) / row.cor).abs());
-            ExternalTiming {
-                row,
-                seconds,
-                cor_error,
-                steps: work.map(|w| w.0),
-                evaluations: work.map(|w| w.1),
-            }
-        })
-        .collect())
+    for (t, o) in times.iter_mut().zip(&mut out) {
+        for k in 0..2 {
+            t[k].sort_by(|a, b| a.total_cmp(b));
+            o.seconds[k] = t[k][t[k].len() / 2];
+        }
+    }
+    Ok(out)
 }
 
 /// Groups of rows reported by [`external_summary`]: name and membership.
@@ -493,7 +614,7 @@ pub fn external_groups() -> Vec<(&'static str, fn(&crate::validate::ExternalRow)
 }
 
 /// Write the per-row timings as CSV.
-pub fn write_external_csv(path: &Path, rows: &[ExternalTiming]) -> Result<()> {
+pub fn write_external_csv(path: &Path, rows: &[ExternalTiming], kind: TimedRows) -> Result<()> {
     write_atomic(path, |w| {
         let mut c = csv::Writer::from_writer(w);
         let io = |e: csv::Error| Error::io(path, e);
@@ -501,7 +622,7 @@ pub fn write_external_csv(path: &Path, rows: &[ExternalTiming]) -> Result<()> {
             "nu",
             "p2",
             "p3",
-            "cor_reference",
+            kind.cor_column(),
             "seconds_rtol_1e-6",
             "cor_error_rtol_1e-6",
             "seconds_rtol_1e-10",
@@ -562,7 +683,8 @@ fn group_stats(rows: &[ExternalTiming]) -> Vec<GroupStats> {
             v.sort_by(|a, b| a.total_cmp(b));
             v[v.len() / 2]
         };
-        let max_err = |k: usize| sel.iter().map(|t| t.cor_error[k]).fold(0.0, f64::max);
+        // NaN (no reference) when no row has one
+        let max_err = |k: usize| sel.iter().map(|t| t.cor_error[k]).fold(f64::NAN, f64::max);
         let steps = |k: usize| sel.iter().map(|t| t.steps[k] as f64).sum::<f64>() / n;
         let evals = |k: usize| sel.iter().map(|t| t.evaluations[k] as f64).sum::<f64>() / n;
         out.push(GroupStats {
@@ -580,17 +702,24 @@ fn group_stats(rows: &[ExternalTiming]) -> Vec<GroupStats> {
 /// Markdown table: per group, rows, and at each accuracy the median time, the max CoR error and
 /// the mean work of a solve (attempted steps / force and history evaluations; machine
 /// independent, unlike the times).
-pub fn external_summary(rows: &[ExternalTiming]) -> String {
-    let mut s = String::from(
-        "| rows of the external tables | n | rtol 1e-6: median time | max CoR error | steps / evaluations | rtol 1e-10: median time | max CoR error | steps / evaluations |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n",
+pub fn external_summary(rows: &[ExternalTiming], kind: TimedRows) -> String {
+    let err = kind.error_header();
+    let mut s = format!(
+        "| {} | n | rtol 1e-6: median time | {err} | steps / evaluations | rtol 1e-10: median time | {err} | steps / evaluations |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n",
+        kind.title()
     );
     for g in group_stats(rows) {
         let cols: Vec<String> = (0..2)
             .map(|k| {
+                let e = g.max_error[k];
+                let e = if e.is_nan() {
+                    "-".to_string()
+                } else {
+                    format!("{e:.1e}")
+                };
                 format!(
-                    "{} | {:.1e} | {:.1} / {:.0}",
+                    "{} | {e} | {:.1} / {:.0}",
                     fmt_time(g.median[k]),
-                    g.max_error[k],
                     g.steps[k],
                     g.evaluations[k]
                 )
@@ -657,7 +786,7 @@ mod tests {
             timing(0.05, [30, 90], [200, 700]),
             timing(0.04, [20, 70], [100, 500]),
         ];
-        let table = external_summary(&rows);
+        let table = external_summary(&rows, TimedRows::External);
         let line = |prefix: &str| {
             table
                 .lines()
@@ -682,6 +811,31 @@ mod tests {
             line("| nearly elastic").contains("| 10.0 / 60 |"),
             "{table}"
         );
+        assert!(table.starts_with("| rows of the external tables | n |"));
+        // without a reference (the random sample at rtol 1e-10): a dash, not NaN
+        let mut random = rows.clone();
+        for t in &mut random {
+            t.cor_error[1] = f64::NAN;
+        }
+        let table = external_summary(&random, TimedRows::Random);
+        assert!(table.starts_with("| random rows of the paper's range | n |"));
+        assert!(
+            line_of(&table, "| all rows | 3 |").contains("| 1.0e-7 | 20.0 / 120 |"),
+            "{table}"
+        );
+        assert!(
+            line_of(&table, "| all rows | 3 |").contains("| - | 66.7 / 500 |"),
+            "{table}"
+        );
+        assert!(!table.contains("NaN"), "{table}");
+    }
+
+    fn line_of(table: &str, prefix: &str) -> String {
+        table
+            .lines()
+            .find(|l| l.starts_with(prefix))
+            .unwrap_or_else(|| panic!("no row {prefix} in\n{table}"))
+            .to_string()
     }
 
     #[test]
@@ -689,22 +843,38 @@ mod tests {
         let mut slow = timing(0.05, [30, 90], [200, 700]);
         slow.seconds = [40e-6, 150e-6];
         let rows = [timing(0.95, [10, 40], [60, 300]), slow];
-        let text = targets(&rows, Some(3250.0), Some((100_000, 1.01)));
+        let text = targets(
+            &[(TimedRows::External, &rows)],
+            Some(3250.0),
+            Some((100_000, 1.01)),
+        );
         // all rows: median of 10 µs and 40 µs is the upper one (40 µs)
         assert!(
             text.contains(
-                "median at most 20.0 µs at rtol 1e-6: met in 1 of 3 groups, **not met** in \
-                 all rows (40.0 µs), strongly dissipative (e < 0.1) (40.0 µs)"
+                "median at most 20.0 µs at rtol 1e-6 on the rows of the external tables: met in 1 \
+                 of 3 groups, **not met** in all rows (40.0 µs), strongly dissipative (e < 0.1) \
+                 (40.0 µs)"
             ),
             "{text}"
         );
         assert!(
-            text.contains("at rtol 1e-10: met in all 3 groups"),
+            text.contains("at rtol 1e-10 on the rows of the external tables: met in all 3 groups"),
             "{text}"
         );
         assert!(text.contains(": met (3250x)"), "{text}");
         assert!(text.contains(": met (100000 rows in 1.01 s)"), "{text}");
-        let text = targets(&rows, Some(900.0), Some((1000, 0.1)));
+        let fast = [timing(0.95, [10, 40], [60, 300])];
+        let text = targets(
+            &[(TimedRows::External, &rows), (TimedRows::Random, &fast)],
+            Some(900.0),
+            Some((1000, 0.1)),
+        );
+        assert!(
+            text.contains(
+                "at rtol 1e-6 on the random rows of the paper's range: met in all 2 groups"
+            ),
+            "{text}"
+        );
         assert!(text.contains("**not met** (900x)"), "{text}");
         assert!(
             !text.contains("cor --input"),
@@ -717,7 +887,12 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("mdr-impact-bench-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("bench_external.csv");
-        write_external_csv(&path, &[timing(0.5, [12, 45], [70, 310])]).unwrap();
+        write_external_csv(
+            &path,
+            &[timing(0.5, [12, 45], [70, 310])],
+            TimedRows::External,
+        )
+        .unwrap();
         let text = std::fs::read_to_string(&path).unwrap();
         std::fs::remove_dir_all(&dir).unwrap();
         let mut lines = text.lines();

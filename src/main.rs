@@ -368,8 +368,36 @@ fn run(cli: Cli) -> Result<(), Error> {
                 );
                 let t = bench::external_timing(&|| bar.inc(1))?;
                 bar.finish_and_clear();
-                bench::write_external_csv(&out.join("bench_external.csv"), &t)?;
-                print!("{}", bench::external_summary(&t));
+                bench::write_external_csv(
+                    &out.join("bench_external.csv"),
+                    &t,
+                    bench::TimedRows::External,
+                )?;
+                print!(
+                    "{}",
+                    bench::external_summary(&t, bench::TimedRows::External)
+                );
+                Some(t)
+            };
+            let random = if quick {
+                None
+            } else {
+                let bar = progress_bar(
+                    (bench::RANDOM_ROWS * bench::EXTERNAL_REPEATS) as u64,
+                    "bench fast on random groups",
+                );
+                let t =
+                    bench::random_timing(bench::RANDOM_ROWS, bench::RANDOM_SEED, &|| bar.inc(1))?;
+                bar.finish_and_clear();
+                bench::write_external_csv(
+                    &out.join("bench_random.csv"),
+                    &t,
+                    bench::TimedRows::Random,
+                )?;
+                print!(
+                    "\n{}",
+                    bench::external_summary(&t, bench::TimedRows::Random)
+                );
                 Some(t)
             };
             let batch = if batch_rows > 0 {
@@ -382,14 +410,26 @@ fn run(cli: Cli) -> Result<(), Error> {
             } else {
                 None
             };
-            if let Some(t) = &external {
-                print!("{}", bench::targets(t, bench::speedup(&points), batch));
+            let sets: Vec<(bench::TimedRows, &[bench::ExternalTiming])> = [
+                external.as_deref().map(|r| (bench::TimedRows::External, r)),
+                random.as_deref().map(|r| (bench::TimedRows::Random, r)),
+            ]
+            .into_iter()
+            .flatten()
+            .collect();
+            if !sets.is_empty() {
+                print!("{}", bench::targets(&sets, bench::speedup(&points), batch));
             }
             if !quick {
                 let existing =
                     std::fs::read_to_string(&report).map_err(|e| Error::io(&report, e))?;
-                let section =
-                    bench::summary(&points, &bench::machine(), batch, external.as_deref());
+                let section = bench::summary(
+                    &points,
+                    &bench::machine(),
+                    batch,
+                    external.as_deref(),
+                    random.as_deref(),
+                );
                 let text = validate::replace_performance(&existing, &section)?;
                 output::write_atomic(&report, |w| {
                     w.write_all(text.as_bytes())
