@@ -237,8 +237,7 @@ pub fn summary(
     points: &[BenchPoint],
     machine: &str,
     batch: Option<(usize, f64)>,
-    external: Option<&[ExternalTiming]>,
-    random: Option<&[ExternalTiming]>,
+    timed: &[(TimedRows, Vec<RowTiming>)],
 ) -> String {
     let mut s = String::new();
     let _ = writeln!(
@@ -283,27 +282,9 @@ pub fn summary(
             euler / fast
         );
     }
-    if let Some(rows) = external {
-        let _ = writeln!(
-            s,
-            "\n`fast` on every row of the external tables (the paper's range and its most \
-             dissipative corner; one core, CoR only, median of {EXTERNAL_REPEATS} solves per row, \
-             one per pass over all rows; steps / evaluations: the mean attempted steps and force \
-             and history evaluations of one solve, which do not depend on the machine; \
-             data: [`validation/bench_external.csv`](validation/bench_external.csv)):\n"
-        );
-        s.push_str(&external_summary(rows, TimedRows::External));
-    }
-    if let Some(rows) = random {
-        let _ = writeln!(
-            s,
-            "\nThe same on {} random groups of the paper's range (`nu` uniform in `(-0.99, 0.5]`, \
-             `p2` and `p3` log-uniform; seed {RANDOM_SEED}), where each regime has its share of the \
-             range; grouped by the CoR at rtol 1e-10, no reference (data: \
-             [`validation/bench_random.csv`](validation/bench_random.csv)):\n",
-            rows.len()
-        );
-        s.push_str(&external_summary(rows, TimedRows::Random));
+    for (kind, rows) in timed {
+        let _ = writeln!(s, "\n{}\n", kind.intro(rows.len()));
+        s.push_str(&timing_table(rows, *kind));
     }
     if let Some((rows, secs)) = batch {
         let _ = writeln!(
@@ -312,16 +293,9 @@ pub fn summary(
              {rows} random rows of the paper's range in {secs:.2} s."
         );
     }
-    let sets: Vec<(TimedRows, &[ExternalTiming])> = [
-        external.map(|r| (TimedRows::External, r)),
-        random.map(|r| (TimedRows::Random, r)),
-    ]
-    .into_iter()
-    .flatten()
-    .collect();
-    if !sets.is_empty() {
+    if !timed.is_empty() {
         s.push('\n');
-        s.push_str(&targets(&sets, speedup(points), batch));
+        s.push_str(&targets(timed, speedup(points), batch));
     }
     s
 }
@@ -350,7 +324,7 @@ pub fn speedup(points: &[BenchPoint]) -> Option<f64> {
 }
 
 /// Design targets of `fast` (checked by [`targets`]): median CoR-only time per impact in every
-/// group of [`external_groups`] at rtol 1e-6 and 1e-10 (s).
+/// group of [`timing_groups`] at rtol 1e-6 and 1e-10 (s).
 pub const TARGET_MEDIAN_SECONDS: [f64; 2] = [20e-6, 200e-6];
 /// Design target: `mdr-euler` time over `fast` time at equal CoR error (at most 1e-4).
 pub const TARGET_SPEEDUP: f64 = 1000.0;
@@ -361,18 +335,14 @@ pub const TARGET_BATCH: (usize, f64) = (100_000, 2.0);
 /// values): [`TARGET_MEDIAN_SECONDS`] per group of rows, [`TARGET_SPEEDUP`] and
 /// [`TARGET_BATCH`] (when measured).
 pub fn targets(
-    sets: &[(TimedRows, &[ExternalTiming])],
+    timed: &[(TimedRows, Vec<RowTiming>)],
     speedup: Option<f64>,
     batch: Option<(usize, f64)>,
 ) -> String {
     let mut parts = Vec::new();
-    for &(kind, rows) in sets {
+    for (kind, rows) in timed {
         let stats = group_stats(rows);
-        for (k, (&rtol, &limit)) in EXTERNAL_RTOLS
-            .iter()
-            .zip(&TARGET_MEDIAN_SECONDS)
-            .enumerate()
-        {
+        for (k, (&rtol, &limit)) in TIMING_RTOLS.iter().zip(&TARGET_MEDIAN_SECONDS).enumerate() {
             let missed: Vec<String> = stats
                 .iter()
                 .filter(|g| g.median[k] > limit)
@@ -431,6 +401,54 @@ pub enum TimedRows {
 }
 
 impl TimedRows {
+    /// Both sets, in the order the benchmark times them.
+    pub const ALL: [TimedRows; 2] = [TimedRows::External, TimedRows::Random];
+
+    /// Number of rows of the set.
+    pub fn rows(self) -> Result<usize> {
+        Ok(match self {
+            TimedRows::External => crate::validate::external_rows()?.len(),
+            TimedRows::Random => RANDOM_ROWS,
+        })
+    }
+
+    /// Time `fast` on the set ([`external_timing`] or [`random_timing`]); `tick` after every
+    /// row of every pass.
+    pub fn time(self, tick: &dyn Fn()) -> Result<Vec<RowTiming>> {
+        match self {
+            TimedRows::External => external_timing(tick),
+            TimedRows::Random => random_timing(RANDOM_ROWS, RANDOM_SEED, tick),
+        }
+    }
+
+    /// File name of the per-row CSV (in the benchmark's output directory).
+    pub fn csv_name(self) -> &'static str {
+        match self {
+            TimedRows::External => "bench_external.csv",
+            TimedRows::Random => "bench_random.csv",
+        }
+    }
+
+    /// The paragraph before the set's table in VALIDATION.md, for `n` rows.
+    fn intro(self, n: usize) -> String {
+        let data = format!("[`validation/{0}`](validation/{0})", self.csv_name());
+        match self {
+            TimedRows::External => format!(
+                "`fast` on every row of the external tables (the paper's range and its most \
+                 dissipative corner; one core, CoR only, median of {TIMING_REPEATS} solves per \
+                 row, one per pass over all rows; steps / evaluations: the mean attempted steps \
+                 and force and history evaluations of one solve, which do not depend on the \
+                 machine; data: {data}):"
+            ),
+            TimedRows::Random => format!(
+                "The same on {n} random groups of the paper's range (`nu` uniform in \
+                 `(-0.99, 0.5]`, `p2` and `p3` log-uniform; seed {RANDOM_SEED}), where each \
+                 regime has its share of the range; grouped by the CoR at rtol 1e-10, no \
+                 reference (data: {data}):"
+            ),
+        }
+    }
+
     /// First column of the Markdown table.
     fn title(self) -> &'static str {
         match self {
@@ -456,14 +474,16 @@ impl TimedRows {
     }
 }
 
-/// Time and error of `fast` on one row of the external tables, at rtol 1e-6 and 1e-10.
+/// Time and error of `fast` on one timed row (of the external tables or the random sample, see
+/// [`TimedRows`]), at rtol 1e-6 and 1e-10.
 #[derive(Debug, Clone, PartialEq)]
-pub struct ExternalTiming {
-    /// The row (groups and reference CoR).
+pub struct RowTiming {
+    /// The row: groups, and the CoR the errors are taken against (the reference, or for the
+    /// random sample the CoR at rtol 1e-10).
     pub row: crate::validate::ExternalRow,
     /// Median wall time per impact (s) at rtol 1e-6 and 1e-10.
     pub seconds: [f64; 2],
-    /// Relative CoR error against the row's reference at rtol 1e-6 and 1e-10.
+    /// Relative CoR error against `row.cor` at rtol 1e-6 and 1e-10 (NaN without a reference).
     pub cor_error: [f64; 2],
     /// Attempted steps of one solve at rtol 1e-6 and 1e-10 (`Work::steps`; the same on every
     /// repeat: the solver is deterministic).
@@ -472,26 +492,26 @@ pub struct ExternalTiming {
     pub evaluations: [u64; 2],
 }
 
-/// The two accuracies of [`ExternalTiming`].
-pub const EXTERNAL_RTOLS: [f64; 2] = [1e-6, 1e-10];
+/// The two accuracies of [`RowTiming`].
+pub const TIMING_RTOLS: [f64; 2] = [1e-6, 1e-10];
 
-/// Repeats per row and accuracy in [`external_timing`] (the median is kept), one per pass over
-/// all rows.
-pub const EXTERNAL_REPEATS: usize = 5;
+/// Repeats per row and accuracy in [`external_timing`] and [`random_timing`] (the median is kept),
+/// one per pass over all rows.
+pub const TIMING_REPEATS: usize = 5;
 
 /// Time `fast` (CoR only, one core) on every row of the external tables (`validate::external_rows`):
-/// the median of [`EXTERNAL_REPEATS`] solves per row and accuracy, taken in as many passes over
+/// the median of [`TIMING_REPEATS`] solves per row and accuracy, taken in as many passes over
 /// all rows. On a shared machine a slow period then spreads over every group of rows instead of
 /// slowing the rows timed during it (with the repeats of a row back to back, two runs of
 /// nearly the same code minutes apart gave 23.7 and 17.2 µs for the rows with `nu < 0`).
 /// `tick` after every row of every pass.
-pub fn external_timing(tick: &dyn Fn()) -> Result<Vec<ExternalTiming>> {
+pub fn external_timing(tick: &dyn Fn()) -> Result<Vec<RowTiming>> {
     let rows = crate::validate::external_rows()?;
     let timed = time_rows(&rows, tick)?;
     Ok(rows
         .into_iter()
         .zip(timed)
-        .map(|(row, t)| ExternalTiming {
+        .map(|(row, t)| RowTiming {
             cor_error: t.cor.map(|c| ((c - row.cor) / row.cor).abs()),
             row,
             seconds: t.seconds,
@@ -514,7 +534,7 @@ pub const RANDOM_SEED: u64 = 7;
 /// is the CoR at rtol 1e-10 (within 5.0e-10 of the reference solver on 5000 random groups, see
 /// [`crate::fast`]), `cor_error[0]` the difference of the rtol 1e-6 CoR from it, `cor_error[1]`
 /// NaN.
-pub fn random_timing(n: usize, seed: u64, tick: &dyn Fn()) -> Result<Vec<ExternalTiming>> {
+pub fn random_timing(n: usize, seed: u64, tick: &dyn Fn()) -> Result<Vec<RowTiming>> {
     let rows: Vec<crate::validate::ExternalRow> = crate::batch::random_rows(n, seed)?
         .iter()
         .map(|r| crate::validate::ExternalRow {
@@ -531,7 +551,7 @@ pub fn random_timing(n: usize, seed: u64, tick: &dyn Fn()) -> Result<Vec<Externa
     Ok(rows
         .into_iter()
         .zip(timed)
-        .map(|(row, t)| ExternalTiming {
+        .map(|(row, t)| RowTiming {
             row: crate::validate::ExternalRow {
                 cor: t.cor[1],
                 ..row
@@ -544,7 +564,7 @@ pub fn random_timing(n: usize, seed: u64, tick: &dyn Fn()) -> Result<Vec<Externa
         .collect())
 }
 
-/// What [`time_rows`] measured on one row at each accuracy of [`EXTERNAL_RTOLS`].
+/// What [`time_rows`] measured on one row at each accuracy of [`TIMING_RTOLS`].
 struct Timed {
     seconds: [f64; 2],
     cor: [f64; 2],
@@ -552,7 +572,7 @@ struct Timed {
     evaluations: [u64; 2],
 }
 
-/// The timing loop of [`external_timing`] and [`random_timing`]: [`EXTERNAL_REPEATS`] passes
+/// The timing loop of [`external_timing`] and [`random_timing`]: [`TIMING_REPEATS`] passes
 /// over all rows, each solving every row at each accuracy; the median time per row and accuracy.
 fn time_rows(rows: &[crate::validate::ExternalRow], tick: &dyn Fn()) -> Result<Vec<Timed>> {
     let pronys = rows
@@ -575,9 +595,9 @@ fn time_rows(rows: &[crate::validate::ExternalRow], tick: &dyn Fn()) -> Result<V
             evaluations: [0; 2],
         })
         .collect();
-    for _ in 0..EXTERNAL_REPEATS {
+    for _ in 0..TIMING_REPEATS {
         for (i, prony) in pronys.iter().enumerate() {
-            for (k, &rtol) in EXTERNAL_RTOLS.iter().enumerate() {
+            for (k, &rtol) in TIMING_RTOLS.iter().enumerate() {
                 let t0 = Instant::now();
                 let o = crate::fast::impact(prony, rtol, false)?;
                 times[i][k].push(t0.elapsed().as_secs_f64());
@@ -597,9 +617,9 @@ fn time_rows(rows: &[crate::validate::ExternalRow], tick: &dyn Fn()) -> Result<V
     Ok(out)
 }
 
-/// Groups of rows reported by [`external_summary`]: name and membership.
+/// Groups of rows reported by [`timing_table`]: name and membership.
 #[allow(clippy::type_complexity)]
-pub fn external_groups() -> Vec<(&'static str, fn(&crate::validate::ExternalRow) -> bool)> {
+pub fn timing_groups() -> Vec<(&'static str, fn(&crate::validate::ExternalRow) -> bool)> {
     vec![
         ("all rows", |_| true),
         ("nearly elastic (e >= 0.9)", |r| r.cor >= 0.9),
@@ -614,7 +634,7 @@ pub fn external_groups() -> Vec<(&'static str, fn(&crate::validate::ExternalRow)
 }
 
 /// Write the per-row timings as CSV.
-pub fn write_external_csv(path: &Path, rows: &[ExternalTiming], kind: TimedRows) -> Result<()> {
+pub fn write_timing_csv(path: &Path, rows: &[RowTiming], kind: TimedRows) -> Result<()> {
     write_atomic(path, |w| {
         let mut c = csv::Writer::from_writer(w);
         let io = |e: csv::Error| Error::io(path, e);
@@ -658,8 +678,8 @@ pub fn write_external_csv(path: &Path, rows: &[ExternalTiming], kind: TimedRows)
     })
 }
 
-/// One group of [`external_groups`]: its rows' median time, worst CoR error and mean work at
-/// each accuracy of [`EXTERNAL_RTOLS`].
+/// One group of [`timing_groups`]: its rows' median time, worst CoR error and mean work at
+/// each accuracy of [`TIMING_RTOLS`].
 struct GroupStats {
     name: &'static str,
     n: usize,
@@ -669,11 +689,11 @@ struct GroupStats {
     evaluations: [f64; 2],
 }
 
-/// [`GroupStats`] of every group of [`external_groups`] that has rows.
-fn group_stats(rows: &[ExternalTiming]) -> Vec<GroupStats> {
+/// [`GroupStats`] of every group of [`timing_groups`] that has rows.
+fn group_stats(rows: &[RowTiming]) -> Vec<GroupStats> {
     let mut out = Vec::new();
-    for (name, member) in external_groups() {
-        let sel: Vec<&ExternalTiming> = rows.iter().filter(|t| member(&t.row)).collect();
+    for (name, member) in timing_groups() {
+        let sel: Vec<&RowTiming> = rows.iter().filter(|t| member(&t.row)).collect();
         if sel.is_empty() {
             continue;
         }
@@ -702,7 +722,7 @@ fn group_stats(rows: &[ExternalTiming]) -> Vec<GroupStats> {
 /// Markdown table: per group, rows, and at each accuracy the median time, the max CoR error and
 /// the mean work of a solve (attempted steps / force and history evaluations; machine
 /// independent, unlike the times).
-pub fn external_summary(rows: &[ExternalTiming], kind: TimedRows) -> String {
+pub fn timing_table(rows: &[RowTiming], kind: TimedRows) -> String {
     let err = kind.error_header();
     let mut s = format!(
         "| {} | n | rtol 1e-6: median time | {err} | steps / evaluations | rtol 1e-10: median time | {err} | steps / evaluations |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n",
@@ -761,8 +781,8 @@ mod tests {
     use super::*;
     use crate::validate::ExternalRow;
 
-    fn timing(cor: f64, steps: [u64; 2], evaluations: [u64; 2]) -> ExternalTiming {
-        ExternalTiming {
+    fn timing(cor: f64, steps: [u64; 2], evaluations: [u64; 2]) -> RowTiming {
+        RowTiming {
             row: ExternalRow {
                 nu: 0.3,
                 p2: 1.0,
@@ -780,13 +800,13 @@ mod tests {
     }
 
     #[test]
-    fn external_summary_reports_mean_work_per_group() {
+    fn timing_table_reports_mean_work_per_group() {
         let rows = [
             timing(0.95, [10, 40], [60, 300]),
             timing(0.05, [30, 90], [200, 700]),
             timing(0.04, [20, 70], [100, 500]),
         ];
-        let table = external_summary(&rows, TimedRows::External);
+        let table = timing_table(&rows, TimedRows::External);
         let line = |prefix: &str| {
             table
                 .lines()
@@ -817,7 +837,7 @@ mod tests {
         for t in &mut random {
             t.cor_error[1] = f64::NAN;
         }
-        let table = external_summary(&random, TimedRows::Random);
+        let table = timing_table(&random, TimedRows::Random);
         assert!(table.starts_with("| random rows of the paper's range | n |"));
         assert!(
             line_of(&table, "| all rows | 3 |").contains("| 1.0e-7 | 20.0 / 120 |"),
@@ -844,7 +864,7 @@ mod tests {
         slow.seconds = [40e-6, 150e-6];
         let rows = [timing(0.95, [10, 40], [60, 300]), slow];
         let text = targets(
-            &[(TimedRows::External, &rows)],
+            &[(TimedRows::External, rows.to_vec())],
             Some(3250.0),
             Some((100_000, 1.01)),
         );
@@ -865,7 +885,10 @@ mod tests {
         assert!(text.contains(": met (100000 rows in 1.01 s)"), "{text}");
         let fast = [timing(0.95, [10, 40], [60, 300])];
         let text = targets(
-            &[(TimedRows::External, &rows), (TimedRows::Random, &fast)],
+            &[
+                (TimedRows::External, rows.to_vec()),
+                (TimedRows::Random, fast.to_vec()),
+            ],
             Some(900.0),
             Some((1000, 0.1)),
         );
@@ -887,7 +910,7 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("mdr-impact-bench-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("bench_external.csv");
-        write_external_csv(
+        write_timing_csv(
             &path,
             &[timing(0.5, [12, 45], [70, 310])],
             TimedRows::External,

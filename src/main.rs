@@ -358,48 +358,18 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             bench::write_csv(&out.join("bench.csv"), &points)?;
             bench::plot(&out.join("work-precision.svg"), &points)?;
-            let external = if quick {
-                None
-            } else {
-                let rows = mdr_impact::validate::external_rows()?.len() as u64;
+            let mut timed = Vec::new();
+            for kind in bench::TimedRows::ALL.into_iter().filter(|_| !quick) {
                 let bar = progress_bar(
-                    rows * bench::EXTERNAL_REPEATS as u64,
-                    "bench fast on the external tables",
+                    (kind.rows()? * bench::TIMING_REPEATS) as u64,
+                    &format!("bench fast: {}", kind.csv_name()),
                 );
-                let t = bench::external_timing(&|| bar.inc(1))?;
+                let t = kind.time(&|| bar.inc(1))?;
                 bar.finish_and_clear();
-                bench::write_external_csv(
-                    &out.join("bench_external.csv"),
-                    &t,
-                    bench::TimedRows::External,
-                )?;
-                print!(
-                    "{}",
-                    bench::external_summary(&t, bench::TimedRows::External)
-                );
-                Some(t)
-            };
-            let random = if quick {
-                None
-            } else {
-                let bar = progress_bar(
-                    (bench::RANDOM_ROWS * bench::EXTERNAL_REPEATS) as u64,
-                    "bench fast on random groups",
-                );
-                let t =
-                    bench::random_timing(bench::RANDOM_ROWS, bench::RANDOM_SEED, &|| bar.inc(1))?;
-                bar.finish_and_clear();
-                bench::write_external_csv(
-                    &out.join("bench_random.csv"),
-                    &t,
-                    bench::TimedRows::Random,
-                )?;
-                print!(
-                    "\n{}",
-                    bench::external_summary(&t, bench::TimedRows::Random)
-                );
-                Some(t)
-            };
+                bench::write_timing_csv(&out.join(kind.csv_name()), &t, kind)?;
+                println!("{}", bench::timing_table(&t, kind));
+                timed.push((kind, t));
+            }
             let batch = if batch_rows > 0 {
                 let rows = batch::random_rows(batch_rows, 1)?;
                 let t0 = std::time::Instant::now();
@@ -410,26 +380,13 @@ fn run(cli: Cli) -> Result<(), Error> {
             } else {
                 None
             };
-            let sets: Vec<(bench::TimedRows, &[bench::ExternalTiming])> = [
-                external.as_deref().map(|r| (bench::TimedRows::External, r)),
-                random.as_deref().map(|r| (bench::TimedRows::Random, r)),
-            ]
-            .into_iter()
-            .flatten()
-            .collect();
-            if !sets.is_empty() {
-                print!("{}", bench::targets(&sets, bench::speedup(&points), batch));
+            if !timed.is_empty() {
+                print!("{}", bench::targets(&timed, bench::speedup(&points), batch));
             }
             if !quick {
                 let existing =
                     std::fs::read_to_string(&report).map_err(|e| Error::io(&report, e))?;
-                let section = bench::summary(
-                    &points,
-                    &bench::machine(),
-                    batch,
-                    external.as_deref(),
-                    random.as_deref(),
-                );
+                let section = bench::summary(&points, &bench::machine(), batch, &timed);
                 let text = validate::replace_performance(&existing, &section)?;
                 output::write_atomic(&report, |w| {
                     w.write_all(text.as_bytes())
