@@ -906,6 +906,26 @@ mod tests {
     }
 
     #[test]
+    fn random_timing_measures_every_row_against_its_tight_solve() {
+        let t = random_timing(20, RANDOM_SEED, &|| {}).unwrap();
+        assert_eq!(t.len(), 20);
+        for r in &t {
+            let row = &r.row;
+            assert!((-0.99..=0.5).contains(&row.nu), "{row:?}");
+            assert!((1e-4..=1e2).contains(&row.p2) && (1e-3..=1e4).contains(&row.p3));
+            assert!(row.cor > 0.0 && row.cor <= 1.0, "{row:?}");
+            // the rtol 1e-6 CoR is within its request of the rtol 1e-10 one
+            assert!(r.cor_error[0] <= 1e-6, "{r:?}");
+            assert!(r.cor_error[1].is_nan());
+            assert!(r.seconds.iter().all(|&s| s > 0.0 && s.is_finite()));
+            assert!(r.steps[1] > r.steps[0] && r.evaluations[1] > r.evaluations[0]);
+        }
+        // the same sample as `cor --input` draws for this seed
+        let rows = crate::batch::random_rows(20, RANDOM_SEED).unwrap();
+        assert_eq!(rows[3].groups.p3, t[3].row.p3);
+    }
+
+    #[test]
     fn external_csv_has_work_columns() {
         let dir = std::env::temp_dir().join(format!("mdr-impact-bench-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
