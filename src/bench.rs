@@ -807,30 +807,15 @@ mod tests {
             timing(0.04, [20, 70], [100, 500]),
         ];
         let table = timing_table(&rows, TimedRows::External);
-        let line = |prefix: &str| {
-            table
-                .lines()
-                .find(|l| l.starts_with(prefix))
-                .unwrap_or_else(|| panic!("no row {prefix} in\n{table}"))
-                .to_string()
-        };
         // means over the group's rows: (10+30+20)/3 = 20 steps, (60+200+100)/3 = 120 evaluations
-        assert!(
-            line("| all rows | 3 |").contains("| 20.0 / 120 |"),
-            "{table}"
-        );
-        assert!(
-            line("| all rows | 3 |").contains("| 66.7 / 500 |"),
-            "{table}"
-        );
-        assert!(
-            line("| strongly dissipative").contains("| 25.0 / 150 |"),
-            "{table}"
-        );
-        assert!(
-            line("| nearly elastic").contains("| 10.0 / 60 |"),
-            "{table}"
-        );
+        for (row, cell) in [
+            ("| all rows | 3 |", "| 20.0 / 120 |"),
+            ("| all rows | 3 |", "| 66.7 / 500 |"),
+            ("| strongly dissipative", "| 25.0 / 150 |"),
+            ("| nearly elastic", "| 10.0 / 60 |"),
+        ] {
+            assert!(line_of(&table, row).contains(cell), "{cell} in\n{table}");
+        }
         assert!(table.starts_with("| rows of the external tables | n |"));
         // without a reference (the random sample at rtol 1e-10): a dash, not NaN
         let mut random = rows.clone();
@@ -839,14 +824,9 @@ mod tests {
         }
         let table = timing_table(&random, TimedRows::Random);
         assert!(table.starts_with("| random rows of the paper's range | n |"));
-        assert!(
-            line_of(&table, "| all rows | 3 |").contains("| 1.0e-7 | 20.0 / 120 |"),
-            "{table}"
-        );
-        assert!(
-            line_of(&table, "| all rows | 3 |").contains("| - | 66.7 / 500 |"),
-            "{table}"
-        );
+        let all = line_of(&table, "| all rows | 3 |");
+        assert!(all.contains("| 1.0e-7 | 20.0 / 120 |"), "{table}");
+        assert!(all.contains("| - | 66.7 / 500 |"), "{table}");
         assert!(!table.contains("NaN"), "{table}");
     }
 
