@@ -511,12 +511,9 @@ pub fn external_timing(tick: &dyn Fn()) -> Result<Vec<RowTiming>> {
     Ok(rows
         .into_iter()
         .zip(timed)
-        .map(|(row, t)| RowTiming {
-            cor_error: t.cor.map(|c| ((c - row.cor) / row.cor).abs()),
-            row,
-            seconds: t.seconds,
-            steps: t.steps,
-            evaluations: t.evaluations,
+        .map(|(row, t)| {
+            let cor_error = t.cor.map(|c| ((c - row.cor) / row.cor).abs());
+            t.timing(row, cor_error)
         })
         .collect())
 }
@@ -551,15 +548,10 @@ pub fn random_timing(n: usize, seed: u64, tick: &dyn Fn()) -> Result<Vec<RowTimi
     Ok(rows
         .into_iter()
         .zip(timed)
-        .map(|(row, t)| RowTiming {
-            row: crate::validate::ExternalRow {
-                cor: t.cor[1],
-                ..row
-            },
-            cor_error: [((t.cor[0] - t.cor[1]) / t.cor[1]).abs(), f64::NAN],
-            seconds: t.seconds,
-            steps: t.steps,
-            evaluations: t.evaluations,
+        .map(|(row, t)| {
+            let cor = t.cor[1];
+            let cor_error = [((t.cor[0] - cor) / cor).abs(), f64::NAN];
+            t.timing(crate::validate::ExternalRow { cor, ..row }, cor_error)
         })
         .collect())
 }
@@ -570,6 +562,19 @@ struct Timed {
     cor: [f64; 2],
     steps: [u64; 2],
     evaluations: [u64; 2],
+}
+
+impl Timed {
+    /// The [`RowTiming`] of `row` with the given CoR errors.
+    fn timing(self, row: crate::validate::ExternalRow, cor_error: [f64; 2]) -> RowTiming {
+        RowTiming {
+            row,
+            seconds: self.seconds,
+            cor_error,
+            steps: self.steps,
+            evaluations: self.evaluations,
+        }
+    }
 }
 
 /// The timing loop of [`external_timing`] and [`random_timing`]: [`TIMING_REPEATS`] passes
