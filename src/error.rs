@@ -47,15 +47,43 @@ pub enum Error {
         /// The cap.
         limit: u64,
     },
+    /// An adaptive driver's refinement did not settle into asymptotic convergence, so no error
+    /// estimate could be trusted.
+    #[error("{solver}: requested rtol {rtol:e} not reached: the CoR did not converge asymptotically in {levels} refinements (last change between levels {last_change:.2e} relative); use another solver")]
+    NotAsymptotic {
+        /// Solver name.
+        solver: &'static str,
+        /// Requested relative tolerance of the CoR.
+        rtol: f64,
+        /// The relative change of the CoR between the last two levels.
+        last_change: f64,
+        /// Refinement levels tried.
+        levels: u32,
+    },
+    /// An adaptive step size fell below the solver's smallest step.
+    #[error("{solver}: step size {step:e} fell below its minimum at t = {time:e} (canonical units) for rtol {rtol:e}")]
+    StepSizeTooSmall {
+        /// Solver name.
+        solver: &'static str,
+        /// Time where it happened, in units of `L / v0`.
+        time: f64,
+        /// The step size.
+        step: f64,
+        /// Requested local tolerance.
+        rtol: f64,
+    },
     /// An adaptive driver could not reach the requested accuracy.
-    #[error("{solver}: requested rtol {rtol:e} not reached, estimated relative error {estimate:e} after {levels} refinements")]
+    #[error("{solver}: requested rtol {rtol:e} not reached: estimated relative error {estimate:.2e} (accepted at or below {required:.2e}) after {levels} refinements")]
     AccuracyNotReached {
         /// Solver name.
         solver: &'static str,
         /// Requested relative tolerance of the CoR.
         rtol: f64,
-        /// Best error estimate reached.
+        /// The relative error estimate of the last refinement: the one that caused the refusal.
         estimate: f64,
+        /// The level an estimate must reach to be accepted (`rtol`, or `rtol` times a safety
+        /// factor of the driver).
+        required: f64,
         /// Refinement levels tried.
         levels: u32,
     },
@@ -101,6 +129,14 @@ pub enum Error {
         line: u64,
         /// What is wrong.
         message: String,
+    },
+    /// `auto`: the first solver refused and so did the fallback.
+    #[error("{first}; fallback {second}")]
+    NoSolver {
+        /// Why the first solver refused.
+        first: Box<Error>,
+        /// Why the fallback refused.
+        second: Box<Error>,
     },
     /// A request that the chosen solver does not support.
     #[error("{0}")]

@@ -282,6 +282,9 @@ pub struct Outcome {
     pub work: Work,
     /// Name of the solver that produced it.
     pub solver: &'static str,
+    /// Why `auto` did not answer with its first choice: the refusal of `fast` when `reference`
+    /// answered instead (`None` otherwise).
+    pub fallback: Option<String>,
 }
 
 impl Outcome {

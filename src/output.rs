@@ -84,8 +84,12 @@ pub fn summary(impact: &Impact, o: &Outcome) -> String {
         ),
     );
     line("solver", o.solver.to_string());
+    if let Some(why) = &o.fallback {
+        line("  instead of fast", why.clone());
+    }
     line("coefficient of restitution", format!("{:.9}", o.cor));
     if let Some(est) = o.cor_error_estimate {
+        // every solver's estimate is at most the requested rtol on success (see README)
         line("  estimated rel. error", format!("{est:.1e}"));
     }
     line(

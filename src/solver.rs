@@ -188,13 +188,26 @@ fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
         }
         (SolverKind::Fast, _) => return fast::impact(&material.prony, opts.rtol, opts.history),
         (SolverKind::Auto, None) => {
-            // The cheapest solver for any rtol is the reduced one; should it fail to reach the
-            // accuracy, the reference solver (a different integrator) answers instead.
+            // The cheapest solver for any rtol is the reduced one, which verifies itself by
+            // successively tighter solves; should it refuse, the reference solver (a different
+            // integrator, verified the same way) answers instead, and the outcome says why.
             return match fast::impact(&material.prony, opts.rtol, opts.history) {
                 Ok(o) => Ok(o),
-                Err(Error::AccuracyNotReached { .. }) | Err(Error::NoConvergence { .. }) => {
-                    theory::impact(&material.prony, opts.rtol.max(1e-13), opts.history)
-                }
+                Err(
+                    first @ (Error::AccuracyNotReached { .. }
+                    | Error::NoConvergence { .. }
+                    | Error::WorkLimit { .. }
+                    | Error::StepSizeTooSmall { .. }),
+                ) => match theory::impact(&material.prony, opts.rtol, opts.history) {
+                    Ok(mut o) => {
+                        o.fallback = Some(first.to_string());
+                        Ok(o)
+                    }
+                    Err(second) => Err(Error::NoSolver {
+                        first: Box::new(first),
+                        second: Box::new(second),
+                    }),
+                },
                 Err(e) => Err(e),
             };
         }

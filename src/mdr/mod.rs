@@ -469,6 +469,7 @@ fn finish(
             levels: 1,
         },
         solver,
+        fallback: None,
     }
 }
 
@@ -629,18 +630,47 @@ pub fn solve_rtol(
     let mut work = Work::default();
     let mut prev: Option<f64> = None;
     let mut deltas: Vec<f64> = Vec::new();
-    let mut last_est = f64::INFINITY;
+    // the relative estimate of the last level when its sequence looked asymptotic
+    let mut asymptotic: Option<f64> = None;
+    let mut last_change = f64::INFINITY;
+    let refuse = |levels: u32, asymptotic: Option<f64>, last_change: f64| match asymptotic {
+        Some(estimate) => Error::AccuracyNotReached {
+            solver: scheme.name(),
+            rtol,
+            estimate,
+            required: tolerances::MDR_SAFETY * rtol,
+            levels,
+        },
+        None => Error::NotAsymptotic {
+            solver: scheme.name(),
+            rtol,
+            last_change,
+            levels,
+        },
+    };
+    // element updates of a level with `n` elements per contact radius and `m` steps
+    let level_work = |n: usize, m: usize| {
+        (capacity_for(layout.contact_radius / n as f64, layout.contact_radius) as u64 / 4)
+            .saturating_mul(m as u64 + 8)
+    };
+    let refine = |level: u32, n: usize, m: usize| match scheme {
+        Scheme::Exponential => (2 * n, 2 * m),
+        Scheme::Euler if level % 2 == 1 => (2 * n, 2 * m),
+        Scheme::Euler => (n, 2 * m),
+    };
     for level in 0..tolerances::MDR_MAX_LEVELS {
-        let predicted =
-            (capacity_for(layout.contact_radius / n as f64, layout.contact_radius) as u64 / 4)
-                .saturating_mul(m as u64 + 8);
+        let predicted = level_work(n, m);
         if work.element_updates.saturating_add(predicted) > work_limit {
-            return Err(Error::AccuracyNotReached {
-                solver: scheme.name(),
-                rtol,
-                estimate: last_est,
-                levels: level,
-            });
+            if level == 0 {
+                // the coarsest grid the stability bound allows is already over the limit
+                return Err(Error::WorkLimit {
+                    solver: scheme.name(),
+                    what: "element updates of the coarsest stable grid",
+                    needed: predicted,
+                    limit: work_limit,
+                });
+            }
+            return Err(refuse(level, asymptotic, last_change));
         }
         let mut o = run_resolution(scheme, material, &layout, n, m, history)?;
         work.steps += o.work.steps;
@@ -650,27 +680,45 @@ pub fn solve_rtol(
         if let Some(p) = prev {
             deltas.push(o.cor - p);
             let scale = o.cor.abs().max(1e-300);
+            last_change = (o.cor - p).abs() / scale;
+            asymptotic = None;
             if let Some(est) = accept(&deltas, scheme.time_order(), rtol * scale) {
-                last_est = est / scale;
                 if est <= tolerances::MDR_SAFETY * rtol * scale {
                     o.work = work;
-                    o.cor_error_estimate = Some(last_est);
+                    o.cor_error_estimate = Some(est / scale);
                     return Ok(o);
                 }
-            } else if let Some(&d) = deltas.last() {
-                last_est = d.abs() / scale;
+                asymptotic = Some(est / scale);
+                // the asymptotic rate tells how many more levels rtol needs: refuse now if
+                // their work is over the limit, instead of after it
+                let k = deltas.len();
+                let rate = if k >= 2 {
+                    (deltas[k - 2] / deltas[k - 1]).abs()
+                } else {
+                    0.0
+                };
+                if rate > 1.0 {
+                    let more = ((est / (tolerances::MDR_SAFETY * rtol * scale)).ln() / rate.ln())
+                        .ceil()
+                        .clamp(1.0, f64::from(tolerances::MDR_MAX_LEVELS));
+                    let (mut nn, mut mm, mut needed) = (n, m, work.element_updates);
+                    for j in 0..more as u32 {
+                        (nn, mm) = refine(level + j, nn, mm);
+                        needed = needed.saturating_add(level_work(nn, mm));
+                    }
+                    if needed > work_limit {
+                        return Err(Error::WorkLimit {
+                            solver: scheme.name(),
+                            what: "element updates predicted to reach rtol",
+                            needed,
+                            limit: work_limit,
+                        });
+                    }
+                }
             }
         }
         prev = Some(o.cor);
-        m *= 2;
-        if scheme == Scheme::Exponential || level % 2 == 1 {
-            n *= 2;
-        }
+        (n, m) = refine(level, n, m);
     }
-    Err(Error::AccuracyNotReached {
-        solver: scheme.name(),
-        rtol,
-        estimate: last_est,
-        levels: tolerances::MDR_MAX_LEVELS,
-    })
+    Err(refuse(tolerances::MDR_MAX_LEVELS, asymptotic, last_change))
 }

@@ -203,6 +203,7 @@ impl HertzImpact {
             history: hist,
             work: Work::default(),
             solver: "hertz",
+            fallback: None,
         })
     }
 }

@@ -728,11 +728,11 @@ fn run(prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
             });
         }
         if h < MIN_STEP {
-            return Err(Error::AccuracyNotReached {
+            return Err(Error::StepSizeTooSmall {
                 solver: "reference",
+                time: st.t,
+                step: h,
                 rtol: tol,
-                estimate: f64::NAN,
-                levels: 0,
             });
         }
         let (first, second, err) = sv.doubled(phase, &st, h, tol)?;
@@ -976,6 +976,7 @@ fn solve(prony: &Prony, rtol: f64, sampling: Sampling, samples: usize) -> Result
                 solver: "reference",
                 rtol,
                 estimate: est,
+                required: rtol,
                 levels: level - 1,
             });
         }
@@ -1000,6 +1001,7 @@ fn solve(prony: &Prony, rtol: f64, sampling: Sampling, samples: usize) -> Result
                 history: fine.history,
                 work,
                 solver: "reference",
+                fallback: None,
             });
         }
         coarse = fine;
@@ -1008,6 +1010,7 @@ fn solve(prony: &Prony, rtol: f64, sampling: Sampling, samples: usize) -> Result
         solver: "reference",
         rtol,
         estimate: est,
+        required: rtol,
         levels: MAX_LEVELS,
     })
 }
