@@ -154,3 +154,67 @@ fn bad_input_is_one_line_and_nonzero() {
     std::fs::write(dir.path().join("s.toml"), scene).unwrap();
     assert_one_line_error(&run(&["run", "s.toml"], dir.path()), "stability bound");
 }
+
+/// Blank lines are skipped and named on stderr; every data row has its row out.
+#[test]
+fn cor_input_blank_lines_reported_and_no_row_lost() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("in.csv");
+    std::fs::write(
+        &p,
+        "nu,p2,p3\r\n0.45,0.01,1\r\n\r\n\r\n0.3,1,0.1\r\n\r\n0.5,0.001,10",
+    )
+    .unwrap();
+    let o = run(&["cor", "--input", "in.csv"], dir.path());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout.clone()).unwrap();
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines.len(), 4, "{out}");
+    assert!(lines[1].starts_with("0.45,0.01,1,"));
+    assert!(lines[2].starts_with("0.3,1,0.1,"));
+    assert!(lines[3].starts_with("0.5,0.001,10,"));
+    assert_eq!(
+        stderr(&o).trim_end(),
+        "note: in.csv: skipped blank lines 3, 4, 6"
+    );
+    // no blank line: nothing on stderr
+    std::fs::write(&p, "nu,p2,p3\n0.45,0.01,1\n").unwrap();
+    let o = run(&["cor", "--input", "in.csv"], dir.path());
+    assert!(o.status.success() && o.stderr.is_empty(), "{}", stderr(&o));
+}
+
+/// Errors name the physical line whatever the line endings, and quote no raw control byte.
+#[test]
+fn cor_input_errors_name_the_physical_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("in.csv");
+    for (bytes, needle) in [
+        (
+            &b"nu,p2,p3\r\n0.45,0.01,1\r\n0.3,1,0.1\r\n0.5,x,10\r\n"[..],
+            "in.csv:4: p2 = 'x'",
+        ),
+        (
+            &b"nu,p2,p3\r0.45,0.01,1\r0.3,1,0.1\r0.5,x,10\r"[..],
+            "in.csv:4:",
+        ),
+        (&b"nu,p2,p3\n\n\n0.5,x,10\n"[..], "in.csv:4:"),
+        (
+            &b"nu,p2,p3\n0.45,0.0\x001,1\n"[..],
+            "in.csv:2: p2 = '0.0\\01'",
+        ),
+        (&b"nu,p2,p3\n0.45,\x07,1\n"[..], "in.csv:2: p2 = '\\u{7}'"),
+        (&b"nu,p2,p3\n0.45,\xff,1\n"[..], "in.csv:2: not valid UTF-8"),
+        (&b"nu,p2,p3\n0.45,0.01,1\n,,\n"[..], "in.csv:3: nu is empty"),
+        (&b"nu,p2,p3\n0.45,0.01\n"[..], "in.csv:2: expected 3 fields"),
+    ] {
+        std::fs::write(&p, bytes).unwrap();
+        let o = run(&["cor", "--input", "in.csv"], dir.path());
+        assert_one_line_error(&o, needle);
+        assert!(o.stdout.is_empty());
+        let e = stderr(&o);
+        assert!(
+            !e.trim_end().chars().any(char::is_control),
+            "raw control byte in {e:?}"
+        );
+    }
+}
