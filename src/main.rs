@@ -41,11 +41,21 @@ enum Command {
             conflicts_with = "input"
         )]
         nu: Option<f64>,
-        /// p2 = G_inf / G_1 (> 0).
-        #[arg(long, required_unless_present = "input", conflicts_with = "input")]
+        /// p2 = G_inf / G_1, 0 < p2 < inf (finite).
+        #[arg(
+            long,
+            allow_hyphen_values = true,
+            required_unless_present = "input",
+            conflicts_with = "input"
+        )]
         p2: Option<f64>,
-        /// p3 = eta (v0 R / (m^2 G_inf^3))^(1/5) (>= 0).
-        #[arg(long, required_unless_present = "input", conflicts_with = "input")]
+        /// p3 = eta (v0 R / (m^2 G_inf^3))^(1/5), 0 <= p3 < inf (0: elastic, Hertz).
+        #[arg(
+            long,
+            allow_hyphen_values = true,
+            required_unless_present = "input",
+            conflicts_with = "input"
+        )]
         p3: Option<f64>,
         /// CSV with header nu,p2,p3: writes nu,p2,p3,cor,contact_time,max_indentation to stdout.
         #[arg(long)]

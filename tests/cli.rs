@@ -218,3 +218,56 @@ fn cor_input_errors_name_the_physical_line() {
         );
     }
 }
+
+/// The groups from flags and from CSV rows: p3 = 0 is the elastic limit (e = 1); non-finite
+/// values and values outside the ranges are refused naming the group.
+#[test]
+fn cor_groups_elastic_limit_and_refusals() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = run(
+        &["cor", "--nu", "0.3", "--p2", "1", "--p3", "0"],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(String::from_utf8(o.stdout).unwrap().trim(), "1");
+    for (args, needle) in [
+        (["0.3", "inf", "1"], "p2 = inf is out of range"),
+        (["0.3", "1e999", "1"], "p2 = inf is out of range"),
+        (["0.3", "1", "-1"], "p3 = -1e0 is out of range"),
+        (["0.5000001", "1", "1"], "nu = 5.000001e-1 is out of range"),
+        (["NaN", "1", "1"], "nu = NaN is out of range"),
+        (["0.3", "NaN", "1"], "p2 = NaN is out of range"),
+        (["0.3", "1", "NaN"], "p3 = NaN is out of range"),
+    ] {
+        let o = run(
+            &["cor", "--nu", args[0], "--p2", args[1], "--p3", args[2]],
+            dir.path(),
+        );
+        assert_one_line_error(&o, needle);
+    }
+    let p = dir.path().join("in.csv");
+    std::fs::write(&p, "nu,p2,p3\n0.3,1,0\n").unwrap();
+    let o = run(&["cor", "--input", "in.csv"], dir.path());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        out.lines().nth(1).unwrap().starts_with("0.3,1,0,1e0,"),
+        "{out}"
+    );
+    for (row, needle) in [
+        ("0.3,inf,1", "in.csv:2: p2 = 'inf' is not a finite number"),
+        (
+            "0.3,1e999,1",
+            "in.csv:2: p2 = '1e999' is not a finite number",
+        ),
+        ("0.3,1,-1", "in.csv:2: p3 = -1e0 is out of range"),
+        (
+            "0.5000001,1,1",
+            "in.csv:2: nu = 5.000001e-1 is out of range",
+        ),
+        ("NaN,1,1", "in.csv:2: nu = 'NaN' is not a finite number"),
+    ] {
+        std::fs::write(&p, format!("nu,p2,p3\n{row}\n")).unwrap();
+        assert_one_line_error(&run(&["cor", "--input", "in.csv"], dir.path()), needle);
+    }
+}

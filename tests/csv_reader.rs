@@ -384,6 +384,12 @@ fn bad_cases() -> Vec<(&'static str, &'static [u8], u64, &'static str)> {
             2,
             "nu = 'NaN' is not a finite number",
         ),
+        (
+            "p2 tiny",
+            b"nu,p2,p3\n0.3,1e-310,1\n",
+            2,
+            "p2 = 1e-310 is out of range",
+        ),
     ]
 }
 
