@@ -103,6 +103,12 @@ pub enum Error {
         /// What is wrong (user text in it is escaped with [`escape_text`]).
         message: String,
     },
+    /// An output path that is empty.
+    #[error("{field} is an empty path: give a file name")]
+    EmptyPath {
+        /// The key or flag that holds the path (e.g. `"[output] history"`).
+        field: &'static str,
+    },
     /// A request that the chosen solver does not support.
     #[error("{0}")]
     Unsupported(String),

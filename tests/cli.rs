@@ -271,3 +271,81 @@ fn cor_groups_elastic_limit_and_refusals() {
         assert_one_line_error(&run(&["cor", "--input", "in.csv"], dir.path()), needle);
     }
 }
+
+/// The default scene without outputs, `solver_lines` added to `[solver]`.
+fn scene_without_outputs(solver_lines: &str) -> String {
+    let head = mdr_impact::scene::DEFAULT_SCENE
+        .split("[output]")
+        .next()
+        .unwrap()
+        .to_string();
+    head.replace("rtol = 1e-6", &format!("rtol = 1e-6\n{solver_lines}"))
+}
+
+/// Scene `[solver]` resolution and `[output]` paths are refused up front, naming the key.
+#[test]
+fn scene_resolution_and_empty_paths_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let s = dir.path().join("s.toml");
+    for (text, needle) in [
+        (
+            scene_without_outputs("elements = 18446744073709551615\nsteps = 2000"),
+            "allowed 2 <= elements <= 10^6",
+        ),
+        (
+            scene_without_outputs("elements = 200\nsteps = 1000000001"),
+            "allowed 4 <= steps <= 10^9",
+        ),
+        (
+            scene_without_outputs("elements = 200\nsteps = 2000")
+                .replace("name = \"auto\"", "name = \"fast\""),
+            "not 'fast'",
+        ),
+        (
+            scene_without_outputs("elements = 200\nsteps = 2000")
+                .replace("name = \"auto\"", "name = \"reference\""),
+            "not 'reference'",
+        ),
+        (
+            format!("{}[output]\nhistory = \"\"\n", scene_without_outputs("")),
+            "[output] history is an empty path",
+        ),
+        (
+            format!("{}[output]\nplot = \"\"\n", scene_without_outputs("")),
+            "[output] plot is an empty path",
+        ),
+        (
+            scene_without_outputs("").replace("name = \"auto\"", "name = \"fa\\u0000st\""),
+            "name = 'fa\\0st'",
+        ),
+    ] {
+        std::fs::write(&s, text).unwrap();
+        let o = run(&["run", "s.toml"], dir.path());
+        assert_one_line_error(&o, needle);
+        assert!(!stderr(&o).trim_end().chars().any(char::is_control));
+        assert!(o.stdout.is_empty());
+    }
+}
+
+/// An empty path on the command line is a usage error naming the flag, never an OS error.
+#[test]
+fn empty_path_flags_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    for (args, flag) in [
+        (&["cor", "--input", ""][..], "--input"),
+        (&["sweep", "--out", ""][..], "--out"),
+        (&["validate", "--out", ""][..], "--out"),
+        (&["bench", "--quick", "--out", ""][..], "--out"),
+        (&["reference", "--out", ""][..], "--out"),
+        (&["figures", "--out", ""][..], "--out"),
+        (&["run", ""][..], "SCENE"),
+    ] {
+        let o = run(args, dir.path());
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let e = stderr(&o);
+        assert!(e.contains(flag), "{args:?}: {e}");
+        assert!(!e.contains("No such file"), "{args:?}: {e}");
+    }
+    // nothing was written
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+}
