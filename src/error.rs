@@ -125,9 +125,10 @@ pub enum Error {
     Csv {
         /// File name.
         file: String,
-        /// 1-based line number in the file (the header is line 1).
+        /// 1-based physical line number in the file (lines end at `\r\n`, `\n` or a lone `\r`;
+        /// blank lines count).
         line: u64,
-        /// What is wrong.
+        /// What is wrong (user text in it is escaped with [`escape_text`]).
         message: String,
     },
     /// `auto`: the first solver refused and so did the fallback.
@@ -137,6 +138,12 @@ pub enum Error {
         first: Box<Error>,
         /// Why the fallback refused.
         second: Box<Error>,
+    },
+    /// An output path that is empty.
+    #[error("{field} is an empty path: give a file name")]
+    EmptyPath {
+        /// The key or flag that holds the path (e.g. `"[output] history"`).
+        field: &'static str,
     },
     /// A request that the chosen solver does not support.
     #[error("{0}")]
@@ -159,6 +166,31 @@ impl Error {
             message: err.to_string(),
         }
     }
+}
+
+/// `text` with control characters and other characters that do not print (`\0`, `\r`, `\n`,
+/// `\u{7}`, a byte-order mark, ...) written as Rust escapes, so that a message quoting a user's
+/// text stays on one line and never carries a raw control byte. Backslashes and quotes are left
+/// as they are, so escaping twice changes nothing.
+///
+/// ```
+/// # use mdr_impact::error::escape_text;
+/// assert_eq!(escape_text("0.4\u{0}5\u{7}"), "0.4\\05\\u{7}");
+/// assert_eq!(escape_text("a\\b 'c' \"d\" é"), "a\\b 'c' \"d\" é");
+/// assert_eq!(escape_text(&escape_text("x\ny")), "x\\ny");
+/// ```
+pub fn escape_text(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        let printable = !c.is_control()
+            && (matches!(c, '\\' | '\'' | '"') || c.escape_debug().next() != Some('\\'));
+        if printable {
+            out.push(c);
+        } else {
+            out.extend(c.escape_debug());
+        }
+    }
+    out
 }
 
 /// Check that `value` is finite and satisfies `ok`; otherwise return [`Error::OutOfRange`].

@@ -39,28 +39,42 @@ impl Sphere {
 
 /// The dimensionless groups of Eq. (11): `p1 = nu`, `p2 = G_inf / G_1`,
 /// `p3 = eta (v0 R / (m^2 G_inf^3))^(1/5)`.
+///
+/// [`Groups::new`] takes user input and refuses every non-finite value (`inf`, `NaN`, `1e999`).
+/// The elastic limit is `p3 = 0` (`eta = 0`: Hertz with `G_inf`, `e = 1`). [`Impact::groups`]
+/// of an elastic material with `G_1 = 0` reports `p2 = inf`, which
+/// [`Groups::canonical_material`] maps back to `G_1 = 0`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Groups {
     /// Static Poisson ratio, `-1 < nu <= 0.5` (`0.5`: incompressible).
     pub nu: f64,
-    /// `G_inf / G_1`, `0 < p2 <= inf` (`inf`: elastic, `G_1 = 0`).
+    /// `G_inf / G_1`, `0 < p2 < inf` with `1/p2` finite (`inf` only from [`Impact::groups`]).
     pub p2: f64,
-    /// Dimensionless viscosity, `0 <= p3 < inf` (`0`: elastic with `G_inf`).
+    /// Dimensionless viscosity, `0 <= p3 < inf` (`0`: elastic with `G_inf`, Hertz).
     pub p3: f64,
 }
 
 impl Groups {
-    /// Validated groups.
+    /// Validated groups: `-1 < nu <= 0.5`, `0 < p2 < inf` with `1/p2` finite, `0 <= p3 < inf`,
+    /// all finite; otherwise [`crate::Error::OutOfRange`] naming the group.
+    ///
+    /// ```
+    /// # use mdr_impact::{Error, Groups};
+    /// assert!(Groups::new(0.3, 1.0, 0.0).is_ok()); // elastic limit
+    /// assert!(matches!(
+    ///     Groups::new(0.3, f64::INFINITY, 1.0),
+    ///     Err(Error::OutOfRange { field: "p2", .. })
+    /// ));
+    /// ```
     pub fn new(nu: f64, p2: f64, p3: f64) -> Result<Self> {
         check("nu", nu, nu > -1.0 && nu <= 0.5, "-1 < nu <= 0.5")?;
-        if !(p2 > 0.0) || p2.is_nan() {
-            return Err(crate::Error::OutOfRange {
-                field: "p2",
-                value: p2,
-                allowed: "0 < p2 <= inf",
-            });
-        }
-        check("p3", p3, p3 >= 0.0, "0 <= p3 < inf")?;
+        check(
+            "p2",
+            p2,
+            p2 > 0.0 && (1.0 / p2).is_finite(),
+            "0 < p2 < inf with 1/p2 finite (elastic limit: p3 = 0)",
+        )?;
+        check("p3", p3, p3 >= 0.0, "0 <= p3 < inf (0: elastic)")?;
         Ok(Self { nu, p2, p3 })
     }
 

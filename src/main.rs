@@ -5,6 +5,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+use mdr_impact::error::escape_text;
 use mdr_impact::indentation::Prescribed;
 use mdr_impact::solver::{force_curve, IndentMethod};
 use mdr_impact::{
@@ -40,11 +41,21 @@ enum Command {
             conflicts_with = "input"
         )]
         nu: Option<f64>,
-        /// p2 = G_inf / G_1 (> 0).
-        #[arg(long, required_unless_present = "input", conflicts_with = "input")]
+        /// p2 = G_inf / G_1, 0 < p2 < inf (finite).
+        #[arg(
+            long,
+            allow_hyphen_values = true,
+            required_unless_present = "input",
+            conflicts_with = "input"
+        )]
         p2: Option<f64>,
-        /// p3 = eta (v0 R / (m^2 G_inf^3))^(1/5) (>= 0).
-        #[arg(long, required_unless_present = "input", conflicts_with = "input")]
+        /// p3 = eta (v0 R / (m^2 G_inf^3))^(1/5), 0 <= p3 < inf (0: elastic, Hertz).
+        #[arg(
+            long,
+            allow_hyphen_values = true,
+            required_unless_present = "input",
+            conflicts_with = "input"
+        )]
         p3: Option<f64>,
         /// CSV with header nu,p2,p3: writes nu,p2,p3,cor,contact_time,max_indentation to stdout.
         #[arg(long)]
@@ -170,7 +181,8 @@ fn main() -> ExitCode {
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e}");
+            // escaped: one line, no raw control bytes from a user's text
+            eprintln!("error: {}", escape_text(&e.to_string()));
             ExitCode::from(1)
         }
     }
@@ -228,13 +240,24 @@ fn run(cli: Cli) -> Result<(), Error> {
             };
             opts.validate()?;
             if let Some(path) = input {
-                let rows = batch::read_rows(&path)?;
-                let outcomes = batch::solve_rows(&path.display().to_string(), &rows, &opts)?;
+                let input = batch::read_rows(&path)?;
+                let file = path.display().to_string();
+                let outcomes = batch::solve_rows(&file, &input.rows, &opts)?;
                 let mut buf = Vec::new();
-                batch::write_results(&mut buf, &rows, &outcomes)?;
+                batch::write_results(&mut buf, &input.rows, &outcomes)?;
                 std::io::stdout()
                     .write_all(&buf)
                     .map_err(|e| Error::io("<stdout>", e))?;
+                // after success only, so that an error stays the one line on stderr
+                let skipped = &input.skipped_blank_lines;
+                if !skipped.is_empty() {
+                    eprintln!(
+                        "note: {}: skipped blank line{} {}",
+                        escape_text(&file),
+                        if skipped.len() == 1 { "" } else { "s" },
+                        batch::format_line_list(skipped)
+                    );
+                }
             } else {
                 // clap guarantees all three are present without --input
                 let (nu, p2, p3) = (

@@ -19,8 +19,8 @@
 //! [solver]              # optional
 //! name = "auto"         # auto | fast | reference | mdr | mdr-euler
 //! rtol = 1e-6           # requested relative accuracy of the CoR
-//! # elements = 200      # explicit MDR resolution (both or neither): elements per contact radius
-//! # steps = 2000        #   and time steps per contact time
+//! # elements = 200      # explicit MDR resolution (both or neither; mdr, mdr-euler, auto only):
+//! # steps = 2000        #   2..=10^6 elements per contact radius, 4..=10^9 steps per contact time
 //!
 //! [output]              # optional; nothing here means: summary only, no histories computed
 //! history = "out/history.csv"   # CSV t,d,v,force,a in SI
@@ -32,7 +32,7 @@
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
-use crate::error::{Error, Result};
+use crate::error::{escape_text, Error, Result};
 use crate::impact::{Impact, Sphere};
 use crate::material::Material;
 use crate::solver::{Resolution, SolveOptions, SolverKind};
@@ -110,7 +110,7 @@ impl Scene {
     pub fn parse(text: &str) -> Result<Self> {
         let raw: RawScene = toml::from_str(text).map_err(|e| {
             // one line: toml's message spans several lines with a source excerpt
-            let msg = e.message().to_string();
+            let msg = escape_text(e.message().trim_end());
             match e.span() {
                 Some(span) => {
                     let line = text[..span.start.min(text.len())].lines().count().max(1);
@@ -138,7 +138,13 @@ impl Scene {
         let impact = Impact::new(sphere, raw.impact.velocity, material)?;
         let mut options = SolveOptions::default();
         if let Some(name) = &raw.solver.name {
-            options.solver = name.parse::<SolverKind>()?;
+            options.solver = name.parse::<SolverKind>().map_err(|_| {
+                Error::Scene(format!(
+                    "[solver] name = '{}': expected one of {}",
+                    escape_text(name),
+                    SolverKind::NAMES.join(", ")
+                ))
+            })?;
         }
         if let Some(rtol) = raw.solver.rtol {
             options.rtol = rtol;
@@ -154,6 +160,11 @@ impl Scene {
         };
         let history_csv = raw.output.history;
         let plot = raw.output.plot;
+        for (field, path) in [("[output] history", &history_csv), ("[output] plot", &plot)] {
+            if path.as_ref().is_some_and(|p| p.as_os_str().is_empty()) {
+                return Err(Error::EmptyPath { field });
+            }
+        }
         options.history = history_csv.is_some() || plot.is_some();
         options.validate()?;
         Ok(Scene {

@@ -106,7 +106,10 @@ impl Default for SolveOptions {
 }
 
 impl SolveOptions {
-    /// Validate the options.
+    /// Validate the options: `1e-12 <= rtol <= 0.1`; an explicit resolution needs
+    /// `2 <= elements <= 10^6` and `4 <= steps <= 10^9` ([`Error::OutOfRange`] naming the field),
+    /// and applies to the MDR schemes only (`mdr`, `mdr-euler`, and `auto`, which then uses
+    /// `mdr`): with `fast` or `reference` it is [`Error::Unsupported`] rather than ignored.
     pub fn validate(&self) -> Result<()> {
         crate::error::check(
             "rtol",
@@ -115,19 +118,26 @@ impl SolveOptions {
             "1e-12 <= rtol <= 0.1",
         )?;
         if let Some(r) = self.resolution {
-            if r.elements < 2 {
+            if !(2..=1_000_000).contains(&r.elements) {
                 return Err(Error::OutOfRange {
                     field: "elements",
                     value: r.elements as f64,
                     allowed: "2 <= elements <= 10^6",
                 });
             }
-            if r.steps < 4 {
+            if !(4..=1_000_000_000).contains(&r.steps) {
                 return Err(Error::OutOfRange {
                     field: "steps",
                     value: r.steps as f64,
                     allowed: "4 <= steps <= 10^9",
                 });
+            }
+            if matches!(self.solver, SolverKind::Fast | SolverKind::Reference) {
+                return Err(Error::Unsupported(format!(
+                    "[solver] elements/steps apply to the mdr and mdr-euler solvers (and auto, \
+                     which then uses mdr) only, not '{}'",
+                    self.solver
+                )));
             }
         }
         Ok(())

@@ -154,3 +154,198 @@ fn bad_input_is_one_line_and_nonzero() {
     std::fs::write(dir.path().join("s.toml"), scene).unwrap();
     assert_one_line_error(&run(&["run", "s.toml"], dir.path()), "stability bound");
 }
+
+/// Blank lines are skipped and named on stderr; every data row has its row out.
+#[test]
+fn cor_input_blank_lines_reported_and_no_row_lost() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("in.csv");
+    std::fs::write(
+        &p,
+        "nu,p2,p3\r\n0.45,0.01,1\r\n\r\n\r\n0.3,1,0.1\r\n\r\n0.5,0.001,10",
+    )
+    .unwrap();
+    let o = run(&["cor", "--input", "in.csv"], dir.path());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout.clone()).unwrap();
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines.len(), 4, "{out}");
+    assert!(lines[1].starts_with("0.45,0.01,1,"));
+    assert!(lines[2].starts_with("0.3,1,0.1,"));
+    assert!(lines[3].starts_with("0.5,0.001,10,"));
+    assert_eq!(
+        stderr(&o).trim_end(),
+        "note: in.csv: skipped blank lines 3, 4, 6"
+    );
+    // no blank line: nothing on stderr
+    std::fs::write(&p, "nu,p2,p3\n0.45,0.01,1\n").unwrap();
+    let o = run(&["cor", "--input", "in.csv"], dir.path());
+    assert!(o.status.success() && o.stderr.is_empty(), "{}", stderr(&o));
+}
+
+/// Errors name the physical line whatever the line endings, and quote no raw control byte.
+#[test]
+fn cor_input_errors_name_the_physical_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("in.csv");
+    for (bytes, needle) in [
+        (
+            &b"nu,p2,p3\r\n0.45,0.01,1\r\n0.3,1,0.1\r\n0.5,x,10\r\n"[..],
+            "in.csv:4: p2 = 'x'",
+        ),
+        (
+            &b"nu,p2,p3\r0.45,0.01,1\r0.3,1,0.1\r0.5,x,10\r"[..],
+            "in.csv:4:",
+        ),
+        (&b"nu,p2,p3\n\n\n0.5,x,10\n"[..], "in.csv:4:"),
+        (
+            &b"nu,p2,p3\n0.45,0.0\x001,1\n"[..],
+            "in.csv:2: p2 = '0.0\\01'",
+        ),
+        (&b"nu,p2,p3\n0.45,\x07,1\n"[..], "in.csv:2: p2 = '\\u{7}'"),
+        (&b"nu,p2,p3\n0.45,\xff,1\n"[..], "in.csv:2: not valid UTF-8"),
+        (&b"nu,p2,p3\n0.45,0.01,1\n,,\n"[..], "in.csv:3: nu is empty"),
+        (&b"nu,p2,p3\n0.45,0.01\n"[..], "in.csv:2: expected 3 fields"),
+    ] {
+        std::fs::write(&p, bytes).unwrap();
+        let o = run(&["cor", "--input", "in.csv"], dir.path());
+        assert_one_line_error(&o, needle);
+        assert!(o.stdout.is_empty());
+        let e = stderr(&o);
+        assert!(
+            !e.trim_end().chars().any(char::is_control),
+            "raw control byte in {e:?}"
+        );
+    }
+}
+
+/// The groups from flags and from CSV rows: p3 = 0 is the elastic limit (e = 1); non-finite
+/// values and values outside the ranges are refused naming the group.
+#[test]
+fn cor_groups_elastic_limit_and_refusals() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = run(
+        &["cor", "--nu", "0.3", "--p2", "1", "--p3", "0"],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(String::from_utf8(o.stdout).unwrap().trim(), "1");
+    for (args, needle) in [
+        (["0.3", "inf", "1"], "p2 = inf is out of range"),
+        (["0.3", "1e999", "1"], "p2 = inf is out of range"),
+        (["0.3", "1", "-1"], "p3 = -1e0 is out of range"),
+        (["0.5000001", "1", "1"], "nu = 5.000001e-1 is out of range"),
+        (["NaN", "1", "1"], "nu = NaN is out of range"),
+        (["0.3", "NaN", "1"], "p2 = NaN is out of range"),
+        (["0.3", "1", "NaN"], "p3 = NaN is out of range"),
+    ] {
+        let o = run(
+            &["cor", "--nu", args[0], "--p2", args[1], "--p3", args[2]],
+            dir.path(),
+        );
+        assert_one_line_error(&o, needle);
+    }
+    let p = dir.path().join("in.csv");
+    std::fs::write(&p, "nu,p2,p3\n0.3,1,0\n").unwrap();
+    let o = run(&["cor", "--input", "in.csv"], dir.path());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        out.lines().nth(1).unwrap().starts_with("0.3,1,0,1e0,"),
+        "{out}"
+    );
+    for (row, needle) in [
+        ("0.3,inf,1", "in.csv:2: p2 = 'inf' is not a finite number"),
+        (
+            "0.3,1e999,1",
+            "in.csv:2: p2 = '1e999' is not a finite number",
+        ),
+        ("0.3,1,-1", "in.csv:2: p3 = -1e0 is out of range"),
+        (
+            "0.5000001,1,1",
+            "in.csv:2: nu = 5.000001e-1 is out of range",
+        ),
+        ("NaN,1,1", "in.csv:2: nu = 'NaN' is not a finite number"),
+    ] {
+        std::fs::write(&p, format!("nu,p2,p3\n{row}\n")).unwrap();
+        assert_one_line_error(&run(&["cor", "--input", "in.csv"], dir.path()), needle);
+    }
+}
+
+/// The default scene without outputs, `solver_lines` added to `[solver]`.
+fn scene_without_outputs(solver_lines: &str) -> String {
+    let head = mdr_impact::scene::DEFAULT_SCENE
+        .split("[output]")
+        .next()
+        .unwrap()
+        .to_string();
+    head.replace("rtol = 1e-6", &format!("rtol = 1e-6\n{solver_lines}"))
+}
+
+/// Scene `[solver]` resolution and `[output]` paths are refused up front, naming the key.
+#[test]
+fn scene_resolution_and_empty_paths_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let s = dir.path().join("s.toml");
+    for (text, needle) in [
+        (
+            scene_without_outputs("elements = 18446744073709551615\nsteps = 2000"),
+            "allowed 2 <= elements <= 10^6",
+        ),
+        (
+            scene_without_outputs("elements = 200\nsteps = 1000000001"),
+            "allowed 4 <= steps <= 10^9",
+        ),
+        (
+            scene_without_outputs("elements = 200\nsteps = 2000")
+                .replace("name = \"auto\"", "name = \"fast\""),
+            "not 'fast'",
+        ),
+        (
+            scene_without_outputs("elements = 200\nsteps = 2000")
+                .replace("name = \"auto\"", "name = \"reference\""),
+            "not 'reference'",
+        ),
+        (
+            format!("{}[output]\nhistory = \"\"\n", scene_without_outputs("")),
+            "[output] history is an empty path",
+        ),
+        (
+            format!("{}[output]\nplot = \"\"\n", scene_without_outputs("")),
+            "[output] plot is an empty path",
+        ),
+        (
+            scene_without_outputs("").replace("name = \"auto\"", "name = \"fa\\u0000st\""),
+            "name = 'fa\\0st'",
+        ),
+    ] {
+        std::fs::write(&s, text).unwrap();
+        let o = run(&["run", "s.toml"], dir.path());
+        assert_one_line_error(&o, needle);
+        assert!(!stderr(&o).trim_end().chars().any(char::is_control));
+        assert!(o.stdout.is_empty());
+    }
+}
+
+/// An empty path on the command line is a usage error naming the flag, never an OS error.
+#[test]
+fn empty_path_flags_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    for (args, flag) in [
+        (&["cor", "--input", ""][..], "--input"),
+        (&["sweep", "--out", ""][..], "--out"),
+        (&["validate", "--out", ""][..], "--out"),
+        (&["bench", "--quick", "--out", ""][..], "--out"),
+        (&["reference", "--out", ""][..], "--out"),
+        (&["figures", "--out", ""][..], "--out"),
+        (&["run", ""][..], "SCENE"),
+    ] {
+        let o = run(args, dir.path());
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let e = stderr(&o);
+        assert!(e.contains(flag), "{args:?}: {e}");
+        assert!(!e.contains("No such file"), "{args:?}: {e}");
+    }
+    // nothing was written
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+}

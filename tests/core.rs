@@ -140,7 +140,13 @@ fn energy_balance() {
 #[test]
 fn elastic_mdr_is_hertz() {
     for nu in [0.5, 0.3, -0.5] {
-        let imp = impact(nu, f64::INFINITY, 1.0);
+        // G_1 = 0 (p2 = inf, which Groups::new refuses as user input)
+        let imp = Impact::from_groups(Groups {
+            nu,
+            p2: f64::INFINITY,
+            p3: 1.0,
+        })
+        .unwrap();
         let mat = solver::canonical_material(&imp);
         let o = mdr::solve_rtol(mdr::Scheme::Exponential, &mat, 1e-7, false, u64::MAX).unwrap();
         assert_relative_eq!(o.cor, 1.0, max_relative = 1e-6);
