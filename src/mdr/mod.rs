@@ -690,13 +690,17 @@ pub fn solve_rtol(
                 }
                 asymptotic = Some(est / scale);
                 // the asymptotic rate tells how many more levels rtol needs: refuse now if
-                // their work is over the limit, instead of after it
+                // their work is over the limit, instead of after it. The rate is taken at
+                // least at the scheme's order (error / 2^p per level), so that only a request
+                // out of reach even at full order is refused early (the observed rate can
+                // still be pre-asymptotic)
                 let k = deltas.len();
-                let rate = if k >= 2 {
+                let observed = if k >= 2 {
                     (deltas[k - 2] / deltas[k - 1]).abs()
                 } else {
                     0.0
                 };
+                let rate = observed.max(2f64.powf(scheme.time_order()));
                 if rate > 1.0 {
                     let more = ((est / (tolerances::MDR_SAFETY * rtol * scale)).ln() / rate.ln())
                         .ceil()
