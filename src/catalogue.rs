@@ -88,6 +88,14 @@ pub const IMPACTS: &[Case] = &[
     case!("dissipative-nu045", Dissipative, 0.45, 0.01, 1.0),
     case!("dissipative-incompressible", Dissipative, 0.5, 0.01, 1.0),
     case!("dissipative-nu03", Dissipative, 0.3, 0.1, 0.5),
+    // the glassy corner, G_0 / G_inf = 1e6, p3 = 1e4 (where fast once missed its rtol)
+    case!(
+        "dissipative-nu045-p2-1e-6-p3-1e4",
+        Dissipative,
+        0.45,
+        1e-6,
+        1e4
+    ),
     case!(
         "near-incompressible-nu049",
         NearIncompressible,
@@ -122,6 +130,8 @@ pub const IMPACTS: &[Case] = &[
     case!("stiff-tau-1e-6", Stiff, 0.3, 1e-4, 1e-2),
     case!("stiff-tau-1e-7", Stiff, 0.5, 1e-4, 1e-3),
     case!("stiff-dissipative", Stiff, 0.45, 1e-4, 0.3),
+    // G_0 / G_inf = 1e7 and tau = p2 p3 = 1e-3
+    case!("stiff-glassy-p2-1e-7-p3-1e4", Stiff, 0.5, 1e-7, 1e4),
 ];
 
 /// Look up an impact case by id.
