@@ -134,7 +134,11 @@ pub fn run(quick: bool, budget: f64, tick: &dyn Fn()) -> Result<Vec<BenchPoint>>
                 });
                 let (median_seconds, repeats) = match timed {
                     Ok(x) => x,
-                    Err(Error::AccuracyNotReached { .. }) | Err(Error::WorkLimit { .. }) => {
+                    Err(
+                        Error::AccuracyNotReached { .. }
+                        | Error::NotAsymptotic { .. }
+                        | Error::WorkLimit { .. },
+                    ) => {
                         tick();
                         continue;
                     }

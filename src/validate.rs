@@ -270,7 +270,9 @@ pub fn impact_case_table(cmp: &[ImpactComparison], settings: &[SolverSetting]) -
 }
 
 fn short_error(e: &str) -> String {
-    if e.contains("not reached") {
+    if e.contains("did not converge asymptotically") {
+        "refinement not asymptotic".into()
+    } else if e.contains("not reached") {
         "accuracy not reached within the work limit".into()
     } else if e.contains("work limit") {
         "work limit".into()
