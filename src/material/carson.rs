@@ -78,9 +78,8 @@ pub fn equivalent_relaxation(material: &GeneralMaterial) -> Result<Prony> {
     let shear = material.shear();
     let g_inf = shear.g_inf();
     let (k_inf, bulk_terms): (f64, &[(f64, f64)]) = match material.bulk() {
+        // (a GeneralMaterial never holds Poisson: the constructor resolves it)
         BulkRheology::Incompressible | BulkRheology::Poisson(_) => {
-            // GeneralMaterial never keeps Poisson; treat it as resolved to incompressible only if
-            // someone built one by hand (it cannot be, the fields are private).
             return Ok(Prony {
                 relaxed: g_inf,
                 terms: shear
@@ -190,6 +189,9 @@ struct Sample {
     g_scaled: f64,
     /// `K * d_a` (Pa).
     k_scaled: f64,
+    /// `sum |terms of G * d_a|` and `sum |terms of K * d_a|` (Pa): the rounding scale of the two.
+    g_abs: f64,
+    k_abs: f64,
     /// `slope * d_a^2` (Pa).
     slope_scaled: f64,
 }
@@ -217,6 +219,7 @@ impl Context<'_> {
         let da = y.exp_m1();
         let (mut d, mut slope) = (self.d0, 0.0);
         let (mut gs, mut ks, mut ss) = (self.g_inf * da, self.k_inf * da, 0.0);
+        let (mut g_abs, mut k_abs) = (gs.abs(), ks.abs());
         for (i, p) in self.poles.iter().enumerate() {
             let (q, di) = if i == a {
                 (ey, da)
@@ -234,6 +237,8 @@ impl Context<'_> {
             let ratio = if i == a { 1.0 } else { da / di };
             gs += p.g * q * ratio;
             ks += p.k * q * ratio;
+            g_abs += (p.g * q * ratio).abs();
+            k_abs += (p.k * q * ratio).abs();
             ss += w * q * ratio * ratio;
         }
         Sample {
@@ -241,6 +246,8 @@ impl Context<'_> {
             slope,
             g_scaled: gs,
             k_scaled: ks,
+            g_abs,
+            k_abs,
             slope_scaled: ss,
         }
     }
@@ -284,10 +291,19 @@ impl Context<'_> {
         let s = self.sample(a, y);
         let tau = self.poles[a].tau * (-y).exp();
         // c = (9/4) (-G K) / (lambda D'(s)) with lambda D'(s) = slope; the d_a^2 cancels.
-        let c = 2.25 * (-s.g_scaled * s.k_scaled) / s.slope_scaled;
+        // At the zero 3K = -4G, so -G K = (4/3) G^2 = (3/4) K^2: take the one of G and K that is
+        // computed with the smaller relative rounding error (when K is huge, K at a zero near a
+        // zero of K is a difference of huge terms and -G K would be rounding noise).
+        let (gs, ks) = (s.g_scaled, s.k_scaled);
+        let minus_gk = if s.g_abs * ks.abs() <= s.k_abs * gs.abs() {
+            (4.0 / 3.0) * gs * gs
+        } else {
+            0.75 * ks * ks
+        };
+        let c = 2.25 * minus_gk / s.slope_scaled;
         Ok(Zero {
             tau,
-            coefficient: if c.is_finite() { c.max(0.0) } else { 0.0 },
+            coefficient: if c.is_finite() { c } else { 0.0 },
         })
     }
 }
