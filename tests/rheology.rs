@@ -7,6 +7,7 @@
 //! `K -> inf` and split terms, the two routes against each other, bad input, and random series.
 
 use approx::assert_relative_eq;
+use mdr_impact::material::carson;
 use mdr_impact::material::rheology::{
     equivalent_elastic, BulkProny, BulkRheology, GeneralMaterial, ShearProny,
 };
@@ -496,7 +497,8 @@ proptest! {
     /// Random series (1 to 40 shear terms, times over 20 decades, moduli over 8, any bulk kind):
     /// no panic, every time positive and finite, every coefficient non-negative (theory: the
     /// coefficients are g/4, g (3k + g)/(3k + 4g) and (9/4)(-G K)/(lambda D') with G K < 0 at a
-    /// zero of D), G_eq(t) non-increasing, and the series equals the Carson formula on s > 0.
+    /// zero of D), G_eq(t) non-increasing, and the series equals the Carson formula on s > 0;
+    /// the same for the two-body combination with a second body.
     #[test]
     fn random_series_are_relaxation_functions(
         g_inf in -4.0f64..2.0,
@@ -526,5 +528,90 @@ proptest! {
             prop_assert!(((series - direct) / direct).abs() < SERIES_RTOL, "s {s}: {series} vs {direct}");
         }
         prop_assert_eq!(g.relaxed, m.equivalent_relaxed());
+        // two bodies: this one against a body whose G_eq is the shear series itself
+        let other = Prony {
+            relaxed: m.shear().g_inf(),
+            terms: m
+                .shear()
+                .terms()
+                .iter()
+                .map(|&(c, tau)| mdr_impact::PronyTerm { coefficient: c, tau })
+                .collect(),
+        };
+        let both = carson::combine(&g, &other).unwrap();
+        for p in &both.terms {
+            prop_assert!(p.tau > 0.0 && p.tau.is_finite(), "{:?}", p);
+            prop_assert!(p.coefficient >= 0.0 && p.coefficient.is_finite(), "{:?}", p);
+        }
+        for s in log_space(1e-12, 1e12, 49) {
+            let direct = combined_formula(&g, &other, s);
+            let series = carson_of_series(&both, s);
+            prop_assert!(((series - direct) / direct).abs() < SERIES_RTOL, "two bodies, s {s}: {series} vs {direct}");
+        }
     }
+}
+
+/// `1 / G_tot(s) = 1 / G_A(s) + 1 / G_B(s)` directly at real `s > 0`.
+fn combined_formula(a: &Prony, b: &Prony, s: f64) -> f64 {
+    1.0 / (1.0 / carson_of_series(a, s) + 1.0 / carson_of_series(b, s))
+}
+
+/// Two bodies (theory notes §8): the combined series against the compliance sum on `s > 0`,
+/// identical bodies give `G / 2`, a much stiffer partner gives the softer body back, and the
+/// glassy and relaxed values are the elastic combinations.
+#[test]
+fn two_bodies_combine_compliances() {
+    let cat = catalogue();
+    let series: Vec<(&str, Prony)> = cat
+        .iter()
+        .map(|(name, m)| (*name, m.equivalent_relaxation().unwrap()))
+        .collect();
+    for (na, a) in &series {
+        for (nb, b) in &series {
+            let g = carson::combine(a, b).unwrap();
+            let mut worst: f64 = 0.0;
+            for s in log_space(1e-14, 1e14, 281) {
+                let direct = combined_formula(a, b, s);
+                worst = worst.max(((carson_of_series(&g, s) - direct) / direct).abs());
+            }
+            assert!(worst < SERIES_RTOL, "{na} + {nb}: {worst:e}");
+            let harmonic = |x: f64, y: f64| x * y / (x + y);
+            assert_relative_eq!(
+                g.relaxed,
+                harmonic(a.relaxed, b.relaxed),
+                max_relative = 1e-15
+            );
+            assert_relative_eq!(
+                g.glassy(),
+                harmonic(a.glassy(), b.glassy()),
+                max_relative = SERIES_RTOL
+            );
+            assert!(g.terms.iter().all(|p| p.coefficient >= 0.0 && p.tau > 0.0));
+        }
+        // identical bodies: half the relaxation function
+        let twin = carson::combine(a, a).unwrap();
+        let stiff = Prony {
+            relaxed: 1e30 * a.glassy(),
+            terms: vec![mdr_impact::PronyTerm {
+                coefficient: 1e30 * a.glassy(),
+                tau: 1.0,
+            }],
+        };
+        let soft = carson::combine(a, &stiff).unwrap();
+        for t in log_space(1e-13, 1e13, 200) {
+            assert_relative_eq!(twin.eval(t), 0.5 * a.eval(t), max_relative = SERIES_RTOL);
+            assert_relative_eq!(soft.eval(t), a.eval(t), max_relative = SERIES_RTOL);
+        }
+    }
+    let bad = Prony {
+        relaxed: 0.0,
+        terms: vec![],
+    };
+    assert!(matches!(
+        carson::combine(&series[0].1, &bad),
+        Err(Error::OutOfRange {
+            field: "relaxed",
+            ..
+        })
+    ));
 }

@@ -49,19 +49,14 @@ pub const POLE_MAX_ITER: u64 = 200;
 /// `Context::sample`).
 const SPLIT_OFFSET: f64 = 0.5;
 
-/// A distinct pole `s = -1/tau` of `D = 3K + 4G`, with the shear and bulk moduli of its terms
-/// (either may be zero, not both).
+/// A distinct pole `s = -1/tau` of `D = alpha P + beta Q`, with the moduli of its terms in `P`
+/// and in `Q` (either may be zero, not both). For `G_eq`: `P = G`, `Q = K`, `alpha = 4`,
+/// `beta = 3`; for two bodies: `P = G_eq,A`, `Q = G_eq,B`, `alpha = beta = 1`.
 #[derive(Debug, Clone, Copy)]
 struct Pole {
     tau: f64,
     g: f64,
     k: f64,
-}
-
-impl Pole {
-    fn w(&self) -> f64 {
-        3.0 * self.k + 4.0 * self.g
-    }
 }
 
 /// The equivalent incompressible relaxation `G_eq(t) = relaxed + sum_m c_m exp(-t / T_m)` of
@@ -113,12 +108,82 @@ pub fn equivalent_relaxation(material: &GeneralMaterial) -> Result<Prony> {
         poles: &poles,
         g_inf,
         k_inf,
+        alpha: 4.0,
+        beta: 3.0,
         d0,
+    };
+    // G_eq = G / 4 + (9/4) H, H = G K / (4G + 3K)
+    for m in 0..poles.len() {
+        let zero = ctx.zero_after(m)?;
+        terms.push((zero.tau, 2.25 * zero.coefficient));
+    }
+    Ok(Prony {
+        relaxed,
+        terms: collect_terms(terms),
+    })
+}
+
+/// Two bodies in contact (theory notes §8): the combined relaxation function `G_tot(t)` with
+/// `1 / G_tot(s) = 1 / G_A(s) + 1 / G_B(s)` in Carson transforms (compliances add, as for `E*`),
+/// as an exact Prony series; `a` and `b` are the equivalent relaxation functions `G_eq` of the two
+/// bodies (Pa, s).
+///
+/// `G_tot = A B / (A + B)` is the composition `H` of the module docs with `alpha = beta = 1`:
+/// a time of `A` alone (or `B` alone) cancels (`G_tot -> B` there); a time shared by a term `a` of
+/// `A` and `b` of `B` keeps `a b / (a + b)`; and `A + B`, a sum of terms increasing in `s`, has one
+/// zero between consecutive distinct times and one between the slowest and `s = 0`, each a pole of
+/// `G_tot` with the coefficient `-A B / (lambda (A + B)') = A^2 / (lambda (A + B)') >= 0`.
+/// Relaxed value `a_inf b_inf / (a_inf + b_inf)`; identical bodies give `G / 2`.
+///
+/// The terms of `a` and `b` may come in any order (sorted, equal times merged). Errors: as
+/// [`Prony::validate`] for either input, [`Error::NoConvergence`] as for
+/// [`equivalent_relaxation`].
+///
+/// ```
+/// # use mdr_impact::material::{carson, Prony, PronyTerm};
+/// let g = Prony { relaxed: 1.0, terms: vec![PronyTerm { coefficient: 9.0, tau: 2.0 }] };
+/// let two = carson::combine(&g, &g).unwrap();
+/// assert!((two.eval(1.0) - 0.5 * g.eval(1.0)).abs() < 1e-14);
+/// ```
+pub fn combine(a: &Prony, b: &Prony) -> Result<Prony> {
+    a.validate()?;
+    b.validate()?;
+    let normalised = |p: &Prony| -> Vec<(f64, f64)> {
+        collect_terms(p.terms.iter().map(|t| (t.tau, t.coefficient)).collect())
+            .into_iter()
+            .map(|t| (t.coefficient, t.tau))
+            .collect()
+    };
+    let (ta, tb) = (normalised(a), normalised(b));
+    let (a0, b0) = (a.relaxed, b.relaxed);
+    let relaxed = a0 * b0 / (a0 + b0);
+    let poles = merge(&ta, &tb);
+    let mut terms: Vec<(f64, f64)> = Vec::with_capacity(2 * poles.len());
+    for p in &poles {
+        if p.g > 0.0 && p.k > 0.0 {
+            terms.push((p.tau, p.g * p.k / (p.g + p.k)));
+        }
+    }
+    let ctx = Context {
+        poles: &poles,
+        g_inf: a0,
+        k_inf: b0,
+        alpha: 1.0,
+        beta: 1.0,
+        d0: a0 + b0,
     };
     for m in 0..poles.len() {
         let zero = ctx.zero_after(m)?;
         terms.push((zero.tau, zero.coefficient));
     }
+    Ok(Prony {
+        relaxed,
+        terms: collect_terms(terms),
+    })
+}
+
+/// Sort by time, merge equal times, drop zero coefficients.
+fn collect_terms(mut terms: Vec<(f64, f64)>) -> Vec<PronyTerm> {
     terms.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut out: Vec<PronyTerm> = Vec::with_capacity(terms.len());
     for (tau, c) in terms {
@@ -131,10 +196,7 @@ pub fn equivalent_relaxation(material: &GeneralMaterial) -> Result<Prony> {
         }
     }
     out.retain(|p| p.coefficient > 0.0);
-    Ok(Prony {
-        relaxed,
-        terms: out,
-    })
+    out
 }
 
 /// Union of the shear and bulk times (both sorted, distinct), increasing.
@@ -171,7 +233,8 @@ fn merge(shear: &[(f64, f64)], bulk: &[(f64, f64)]) -> Vec<Pole> {
     out
 }
 
-/// A zero `s = -1/tau` of `D` and the coefficient of its term in `G_eq(t)`.
+/// A zero `s = -1/tau` of `D` and the coefficient of its term in `H(t)`,
+/// `H = P Q / (alpha P + beta Q)`.
 struct Zero {
     tau: f64,
     coefficient: f64,
@@ -196,14 +259,23 @@ struct Sample {
     slope_scaled: f64,
 }
 
+/// `H = P Q / D`, `D = alpha P + beta Q`, with `P = g_inf + sum g s tau / (1 + s tau)` and
+/// `Q = k_inf + sum k s tau / (1 + s tau)` over the poles (names from the `G_eq` case).
 struct Context<'a> {
     poles: &'a [Pole],
     g_inf: f64,
     k_inf: f64,
+    alpha: f64,
+    beta: f64,
+    /// `D(0) = alpha g_inf + beta k_inf > 0`.
     d0: f64,
 }
 
 impl Context<'_> {
+    fn w(&self, p: &Pole) -> f64 {
+        self.alpha * p.g + self.beta * p.k
+    }
+
     /// Evaluate at `lambda = exp(y) / tau_a`, anchor `a`.
     ///
     /// With `q_i = lambda tau_i` the Carson term `w s tau_i / (1 + s tau_i)` at `s = -lambda` is
@@ -230,7 +302,7 @@ impl Context<'_> {
                 let q = p.tau / tau_a * ey;
                 (q, q - 1.0)
             };
-            let w = p.w();
+            let w = self.w(p);
             d += w * q / di;
             slope += w * q / (di * di);
             // ratio = d_a / d_i (1 for the anchor)
@@ -271,7 +343,7 @@ impl Context<'_> {
             // Slowest bracket (0, lambda_m): D(lambda) lies between D0 - 2 lambda S and
             // D0 - lambda S (S = sum w tau) for lambda <= lambda_m / 2, so the zero is above
             // min(lambda_m / 2, D0 / (2 S)).
-            let s: f64 = self.poles.iter().map(|p| p.w() * p.tau).sum();
+            let s: f64 = self.poles.iter().map(|p| self.w(p) * p.tau).sum();
             let tau_m = self.poles[m].tau;
             let mut u = -(0.5f64.min(self.d0 / (2.0 * s) * tau_m)).ln();
             // Rounding safety: move down until D > 0 there (bounded).
@@ -290,17 +362,17 @@ impl Context<'_> {
         let y = dir * u;
         let s = self.sample(a, y);
         let tau = self.poles[a].tau * (-y).exp();
-        // c = (9/4) (-G K) / (lambda D'(s)) with lambda D'(s) = slope; the d_a^2 cancels.
-        // At the zero 3K = -4G, so -G K = (4/3) G^2 = (3/4) K^2: take the one of G and K that is
-        // computed with the smaller relative rounding error (when K is huge, K at a zero near a
-        // zero of K is a difference of huge terms and -G K would be rounding noise).
+        // h = -P Q / (lambda D'(s)) with lambda D'(s) = slope; the d_a^2 cancels.
+        // At the zero alpha P = -beta Q, so -P Q = (alpha/beta) P^2 = (beta/alpha) Q^2: take the
+        // one of P and Q computed with the smaller relative rounding error (when K is huge, K at a
+        // zero near a zero of K is a difference of huge terms and -G K would be rounding noise).
         let (gs, ks) = (s.g_scaled, s.k_scaled);
-        let minus_gk = if s.g_abs * ks.abs() <= s.k_abs * gs.abs() {
-            (4.0 / 3.0) * gs * gs
+        let minus_pq = if s.g_abs * ks.abs() <= s.k_abs * gs.abs() {
+            self.alpha / self.beta * gs * gs
         } else {
-            0.75 * ks * ks
+            self.beta / self.alpha * ks * ks
         };
-        let c = 2.25 * minus_gk / s.slope_scaled;
+        let c = minus_pq / s.slope_scaled;
         Ok(Zero {
             tau,
             coefficient: if c.is_finite() { c } else { 0.0 },
@@ -358,7 +430,7 @@ where
         (fx, dfx) = f(x);
     }
     Err(Error::NoConvergence {
-        what: "pole of G_eq (zero of 3K + 4G)",
+        what: "pole of a composed relaxation function (zero of 3K + 4G or of G_A + G_B)",
         iterations: POLE_MAX_ITER,
     })
 }
