@@ -35,6 +35,16 @@
 //! `~ 4 g / (3 K_0)` as `K_0 -> inf`), closer than `lambda` itself can resolve; so each zero is
 //! written as an offset `y` from the nearer pole of its bracket, `lambda = lambda_a exp(y)`, and
 //! every `1 - lambda tau_i` is formed from `y` and `(tau_i - tau_a) / tau_a` without cancellation.
+//!
+//! The code works on the general composition `H = P Q / (alpha P + beta Q)` of two Carson sums:
+//! `P = G`, `Q = K`, `(alpha, beta) = (4, 3)` for [`equivalent_relaxation`], and `P = G_A`,
+//! `Q = G_B`, `(1, 1)` for the two-body combination [`combine`] (`1/G_tot = 1/G_A + 1/G_B`).
+//!
+//! Accuracy (`tests/rheology.rs`): the series reproduces the Carson formula on `s > 0` to
+//! `1.3e-15` relative on the test materials (30 terms over 20 decades with a 12-term bulk
+//! included) and to `1e-12` on random series (1 to 40 terms, times over 20 decades, moduli over 8);
+//! it agrees with the independent Talbot inversion `theory::bromwich` in the time domain to that
+//! route's own accuracy (`1e-11` worst, `1e-13` mean).
 
 use super::rheology::{BulkRheology, GeneralMaterial};
 use super::{Prony, PronyTerm};
