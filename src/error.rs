@@ -22,6 +22,19 @@ pub enum Error {
         /// The allowed range, in words (e.g. `"0 < g_inf < inf"`).
         allowed: &'static str,
     },
+    /// A term of a Prony series (shear or bulk) is out of range: the field, the term's index in
+    /// the input (0-based, before sorting and merging) and the value.
+    #[error("{field}[{index}] = {value:e} is out of range: allowed {allowed}")]
+    PronyTerm {
+        /// Name of the field (e.g. `"g_i"`, `"tau_i"`, `"k_j"`, `"theta_j"`).
+        field: &'static str,
+        /// 0-based index of the term as given.
+        index: usize,
+        /// The offending value.
+        value: f64,
+        /// The allowed range, in words.
+        allowed: &'static str,
+    },
     /// An explicit time step is above the stability bound of an explicit scheme.
     #[error(
         "time step {dt:e} (dimensionless) exceeds the stability bound {bound:e} of {scheme}; \

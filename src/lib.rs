@@ -7,6 +7,8 @@
 //!
 //! Where the paper lives in the code:
 //! - [`material`]: Eqs. (1)–(3), the equivalent relaxation function and the element of Eq. (8);
+//!   general Prony rheologies in shear and bulk, their exact `G_eq` and the two-body combination
+//!   (theory notes §8);
 //! - [`impact`]: Eqs. (10)–(11), scales and outcome;
 //! - [`mdr`]: the MDR foundation, Eqs. (4)–(9), with two time schemes;
 //! - [`theory`]: Hertz, Lee–Radok and Ting/Graham, independent of [`mdr`];

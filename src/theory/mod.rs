@@ -12,11 +12,14 @@
 //!   by quadrature for any history and in closed form for the triangle (Dawson);
 //! - [`reference`](mod@reference): the impact solved from the Lee–Radok/Ting formulation with exponential
 //!   collocation (not an element foundation);
-//! - [`files`]: the reference force histories written to `reference/`.
+//! - [`files`]: the reference force histories written to `reference/`;
+//! - [`bromwich`]: `G_eq(t)` of a general material by Talbot inversion of the Carson formula, a
+//!   route independent of the pole computation in `material::carson`.
 //!
 //! Every tolerance used by this module is a named constant below.
 
 pub mod asymptotes;
+pub mod bromwich;
 pub mod files;
 pub mod hertz;
 pub mod quad;

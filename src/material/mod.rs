@@ -10,8 +10,18 @@
 //! Compressibility is carried internally as the bulk compliance `kappa = 1 / (3 K_0)` (1/Pa),
 //! which is `0` for an incompressible solid, so that every formula stays well conditioned as
 //! `nu -> 0.5`.
+//!
+//! General linear viscoelasticity (Prony series in shear and bulk, theory notes §8) lives in
+//! [`rheology`]; its equivalent relaxation function `G_eq(t)`, an exact Prony series from the
+//! Carson-domain formula, in [`carson`]. The standard solid above is their one-term case
+//! ([`Material::general`]).
 
 use crate::error::{check, Error, Result};
+
+pub mod carson;
+pub mod rheology;
+
+pub use rheology::{BulkProny, BulkRheology, GeneralMaterial, ShearProny};
 
 /// Bulk behaviour: an elastic modulus `K_0` (Pa) or incompressible.
 #[derive(Debug, Clone, Copy, PartialEq)]
