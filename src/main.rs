@@ -285,12 +285,14 @@ fn run(cli: Cli) -> Result<(), Error> {
                 let impact = Impact::from_groups(Groups::new(nu, p2, p3)?)?;
                 let o = solve(&impact, &opts)?;
                 if let Some(why) = &o.fallback {
-                    eprintln!(
-                        "note: answered by {} ({}: {})",
-                        o.solver,
-                        SolverKind::Fast,
-                        escape_text(why)
-                    );
+                    // `why` is the refusal of fast, which names it ("fast: requested rtol ...")
+                    let fast = SolverKind::Fast.name();
+                    let why = if why.starts_with(&format!("{fast}:")) {
+                        why.clone()
+                    } else {
+                        format!("{fast}: {why}")
+                    };
+                    eprintln!("note: answered by {} ({})", o.solver, escape_text(&why));
                 }
                 println!("{}", o.cor);
             }

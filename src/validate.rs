@@ -1182,3 +1182,32 @@ closed form; half-sine: quadrature; impacts: reference solver at rtol 1e-11) wit
 giving each file's case, parameters, generating command (`mdr-impact reference --out reference`), method \
 and accuracy. `tests/theory_reference_files.rs` regenerates them and requires equality to 1e-9 of each \
 column's scale.\n";
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn generated_sections_are_kept_and_ignored_by_the_check() {
+        let fresh = format!(
+            "a\n{STRESS_BEGIN}\nrun stress\n{STRESS_END}\nb\n{PERF_BEGIN}\nrun bench\n{PERF_END}\nc\n"
+        );
+        let existing = format!(
+            "old a\n{STRESS_BEGIN}\nstress table\n{STRESS_END}\nb\n{PERF_BEGIN}\ntimes\n{PERF_END}\nc\n"
+        );
+        let kept = keep_generated(&fresh, &existing);
+        assert_eq!(
+            kept,
+            format!("a\n{STRESS_BEGIN}\nstress table\n{STRESS_END}\nb\n{PERF_BEGIN}\ntimes\n{PERF_END}\nc\n")
+        );
+        assert_eq!(without_generated(&kept), without_generated(&fresh));
+        assert_ne!(without_generated(&existing), without_generated(&fresh));
+        let replaced = replace_stress(&kept, "new\n").unwrap();
+        assert!(replaced.contains(&format!("{STRESS_BEGIN}\nnew\n{STRESS_END}")));
+        assert_eq!(without_generated(&replaced), without_generated(&fresh));
+        assert!(matches!(
+            replace_stress("no markers", "x"),
+            Err(Error::Unsupported(_))
+        ));
+    }
+}
