@@ -31,6 +31,7 @@ pub mod output;
 pub mod plot;
 pub mod scene;
 pub mod solver;
+pub mod stress;
 pub mod sweep;
 pub mod theory;
 pub mod tolerances;

@@ -130,6 +130,23 @@ enum Command {
         #[arg(long, default_value_t = 0)]
         batch_rows: usize,
     },
+    /// Stress test: random groups over the whole input range, `auto` and `fast` at every rtol
+    /// from 1e-2 to 1e-11 against the reference; writes the stress section of the report and the
+    /// rows that break the contract.
+    Stress {
+        /// Number of random rows.
+        #[arg(long, default_value_t = mdr_impact::stress::DEFAULT_ROWS)]
+        rows: usize,
+        /// Seed of the rows.
+        #[arg(long, default_value_t = mdr_impact::stress::DEFAULT_SEED)]
+        seed: u64,
+        /// Folder for stress_outside.csv.
+        #[arg(long, default_value = "validation")]
+        out: PathBuf,
+        /// Report whose stress section is replaced.
+        #[arg(long, default_value = "VALIDATION.md")]
+        report: PathBuf,
+    },
     /// Regenerate the reference force histories and their manifest.
     Reference {
         /// Output folder.
@@ -267,6 +284,16 @@ fn run(cli: Cli) -> Result<(), Error> {
                 );
                 let impact = Impact::from_groups(Groups::new(nu, p2, p3)?)?;
                 let o = solve(&impact, &opts)?;
+                if let Some(why) = &o.fallback {
+                    // `why` is the refusal of fast, which names it ("fast: requested rtol ...")
+                    let fast = SolverKind::Fast.name();
+                    let why = if why.starts_with(&format!("{fast}:")) {
+                        why.clone()
+                    } else {
+                        format!("{fast}: {why}")
+                    };
+                    eprintln!("note: answered by {} ({})", o.solver, escape_text(&why));
+                }
                 println!("{}", o.cor);
             }
             Ok(())
@@ -340,8 +367,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             let existing = std::fs::read_to_string(&out).unwrap_or_default();
             if check {
                 let fresh = fresh.replace(&opts.figure_dir.display().to_string(), "validation");
-                if validate::without_performance(&fresh) != validate::without_performance(&existing)
-                {
+                if validate::without_generated(&fresh) != validate::without_generated(&existing) {
                     return Err(Error::Unsupported(format!(
                         "{} is stale: run `mdr-impact validate` and commit the result",
                         out.display()
@@ -349,7 +375,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 }
                 println!("{} is current", out.display());
             } else {
-                let text = validate::keep_performance(&fresh, &existing);
+                let text = validate::keep_generated(&fresh, &existing);
                 output::write_atomic(&out, |w| {
                     w.write_all(text.as_bytes()).map_err(|e| Error::io(&out, e))
                 })?;
@@ -419,6 +445,45 @@ fn run(cli: Cli) -> Result<(), Error> {
                 println!("performance section of {} updated", report.display());
             }
             Ok(())
+        }
+        Command::Stress {
+            rows,
+            seed,
+            out,
+            report,
+        } => {
+            use mdr_impact::stress;
+            // read first: a missing report or markers fail before minutes of work
+            let existing = std::fs::read_to_string(&report).map_err(|e| Error::io(&report, e))?;
+            validate::replace_stress(&existing, "")?;
+            let bar = progress_bar(rows as u64, "stress");
+            let r = stress::run(rows, seed, &|| bar.inc(1));
+            bar.finish_and_clear();
+            let section = r.markdown();
+            print!("{section}");
+            std::fs::create_dir_all(&out).map_err(|e| Error::io(&out, e))?;
+            let csv = out.join("stress_outside.csv");
+            r.write_problems_csv(&csv)?;
+            let text = validate::replace_stress(&existing, &section)?;
+            output::write_atomic(&report, |w| {
+                w.write_all(text.as_bytes())
+                    .map_err(|e| Error::io(&report, e))
+            })?;
+            println!(
+                "stress section of {} updated; {} solves that broke the contract in {}",
+                report.display(),
+                r.problems.len(),
+                csv.display()
+            );
+            if r.clean() {
+                Ok(())
+            } else {
+                Err(Error::Unsupported(format!(
+                    "stress: {} solves broke the contract (see {})",
+                    r.problems.len(),
+                    csv.display()
+                )))
+            }
         }
         Command::Reference { out } => {
             let written = mdr_impact::theory::generate_reference(&out)?;
