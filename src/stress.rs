@@ -8,9 +8,11 @@
 //! independent truth within `rtol + truth_rtol`; a refusal is an error, counted by its kind.
 //!
 //! The truth of a row is the `reference` solver (a different integrator from `fast`) at the
-//! tightest rtol it accepts among 1e-11, 1e-10 and 1e-9; only where it refuses all three is
-//! `fast` at 1e-12 used, and such rows are counted apart (their comparison of `fast` is not
-//! independent). Rows are drawn from the seed and their index alone and reduced in index order,
+//! tightest rtol it accepts among 1e-11 down to 1e-6 (in the glassy corner it refuses requests
+//! below its measured accuracy, see [`crate::theory::REF_GLASSY_ABS_FLOOR`]); only where it
+//! refuses all of them is `fast` at 1e-12 used, and such rows are counted apart (their
+//! comparison of `fast` is not independent). A success is compared within `rtol + truth_rtol`,
+//! so where the truth is looser than the rtol tested the check is only as strict as the truth. Rows are drawn from the seed and their index alone and reduced in index order,
 //! so the report does not depend on the number of threads. Re-run:
 //! `mdr-impact stress --rows N --seed S`, or
 //! `cargo test --release --test stress -- --ignored`.
@@ -36,7 +38,7 @@ pub const RTOLS: [f64; 10] = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e
 pub const SOLVERS: [SolverKind; 2] = [SolverKind::Auto, SolverKind::Fast];
 
 /// The rtols at which the `reference` solver is asked for the truth, tightest first.
-pub const TRUTH_REFERENCE_RTOLS: [f64; 3] = [1e-11, 1e-10, 1e-9];
+pub const TRUTH_REFERENCE_RTOLS: [f64; 6] = [1e-11, 1e-10, 1e-9, 1e-8, 1e-7, 1e-6];
 
 /// The rtol of the `fast` truth used where `reference` refuses all of [`TRUTH_REFERENCE_RTOLS`].
 pub const TRUTH_FAST_RTOL: f64 = 1e-12;
