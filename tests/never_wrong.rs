@@ -37,14 +37,14 @@ const CORNER: [(f64, f64, f64); 3] = [
 #[test]
 fn corner_rows_within_rtol_against_the_reference() {
     for (i, &(nu, p2, p3)) in CORNER.iter().enumerate() {
-        // the tightest rtol the reference verifies there (its local tolerance floor limits it
-        // to about 1.2e-7 on the first row)
-        let truth = [1e-10, 1e-9, 1e-6]
+        // the tightest rtol the reference accepts there (its glassy floor, `rtol e >= 1e-12`,
+        // leaves rtol 1e-6 for these CoRs of about 5e-6); the truth is within that rtol
+        let truth = [1e-10, 1e-9, 1e-8, 1e-7, 1e-6]
             .iter()
             .find_map(|&r| {
                 groups_solve(nu, p2, p3, SolverKind::Reference, r)
                     .ok()
-                    .map(|o| (o.cor, o.cor_error_estimate.unwrap()))
+                    .map(|o| (o.cor, r))
             })
             .expect("the reference answers every corner row at rtol 1e-6");
         let tight = groups_solve(nu, p2, p3, SolverKind::Fast, 1e-12)
@@ -52,7 +52,7 @@ fn corner_rows_within_rtol_against_the_reference() {
             .cor;
         assert!(
             ((tight - truth.0) / truth.0).abs() <= truth.1 + 1e-12,
-            "row {i}: fast at 1e-12 {tight:e} against reference {:e} (estimate {:.1e})",
+            "row {i}: fast at 1e-12 {tight:e} against reference {:e} (rtol {:.0e})",
             truth.0,
             truth.1
         );

@@ -2056,16 +2056,20 @@ fn verified(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
     let mut local = f64::INFINITY;
     let mut last_err: Option<Error> = None;
     let mut prec = rtol;
+    // solves at one tolerance repeated after the energy floor was lowered (at most 2)
+    let mut floor_solves = 0u32;
     while levels < FAST_CHECK_LEVELS && prec >= FAST_MIN_PREC {
         levels += 1;
         match solve_once(s, prec, history) {
             Ok(mut out) => {
                 steps += out.work.steps;
                 local = out.cor_error_estimate.unwrap_or(f64::INFINITY);
-                if out.cor < s.min_tol_scale {
-                    let floor = (0.5 * out.cor).max(f64::MIN_POSITIVE);
-                    // the floor was active in this solve: it does not count as a check
-                    s.min_tol_scale = floor;
+                if out.cor < s.min_tol_scale && floor_solves < 2 {
+                    // the floor was active in this solve: it does not count as a check, nor
+                    // as one of the FAST_CHECK_LEVELS tolerances
+                    s.min_tol_scale = (0.5 * out.cor).max(f64::MIN_POSITIVE);
+                    floor_solves += 1;
+                    levels -= 1;
                     prev = None;
                     continue;
                 }
@@ -2075,7 +2079,7 @@ fn verified(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
                         out.cor_error_estimate = Some(estimate);
                         out.work.steps = steps;
                         out.work.evaluations = s.evaluations;
-                        out.work.levels = levels;
+                        out.work.levels = levels + floor_solves;
                         return Ok(out);
                     }
                 }
@@ -2106,7 +2110,7 @@ fn verified(s: &mut Solver, rtol: f64, history: bool) -> Result<Outcome> {
         }),
         (false, false, None) => Err(Error::NoConvergence {
             what: "fast: successive solves",
-            iterations: u64::from(levels),
+            iterations: u64::from(levels + floor_solves),
         }),
     }
 }
