@@ -378,42 +378,6 @@ fn stress_smoke_fills_its_section_and_keeps_the_rest() {
     assert_one_line_error(&o, "no stress markers");
 }
 
-/// A row of the stress run (seed 1, index 3589: the most dissipative corner, CoR 1.45e-6) where
-/// `fast` refuses rtol 1e-3 (its estimate is 7.1) and `auto` answers with `reference`.
-#[test]
-fn cor_notes_a_fallback_of_auto_on_stderr() {
-    let dir = tempfile::tempdir().unwrap();
-    let (nu, p2, p3) = ("0.5", "8.963948657364199e-8", "1628.8229222028967");
-    let o = run(
-        &["cor", "--nu", nu, "--p2", p2, "--p3", p3, "--rtol", "1e-3"],
-        dir.path(),
-    );
-    assert!(o.status.success(), "{}", stderr(&o));
-    let e = stderr(&o);
-    assert_eq!(e.lines().count(), 1, "{e}");
-    assert!(
-        e.starts_with("note: answered by reference (fast: requested rtol 1e-3 not reached"),
-        "{e}"
-    );
-    let out = String::from_utf8(o.stdout).unwrap();
-    let cor: f64 = out.lines().last().unwrap().trim().parse().unwrap();
-    assert!((cor / 1.4523655e-6 - 1.0).abs() < 1e-3, "{cor}");
-    // fast alone refuses, in one line
-    let o = run(
-        &[
-            "cor", "--nu", nu, "--p2", p2, "--p3", p3, "--rtol", "1e-3", "--solver", "fast",
-        ],
-        dir.path(),
-    );
-    assert_one_line_error(&o, "fast: requested rtol 1e-3 not reached");
-    // no note when fast answers
-    let o = run(
-        &["cor", "--nu", "0.45", "--p2", "0.01", "--p3", "1"],
-        dir.path(),
-    );
-    assert!(o.status.success() && o.stderr.is_empty(), "{}", stderr(&o));
-}
-
 /// `run --json`: one JSON object on stdout with the outcome's keys (SI), for the standard solid
 /// and for a general material; the notes about written files go to stderr.
 #[test]
