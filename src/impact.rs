@@ -8,6 +8,10 @@
 //! maps back to SI with the scales of [`Scales`]:
 //! length `L = (m v0^2 / (G_inf sqrt(R)))^(2/5)`, time `L / v0`, force `m v0^2 / L`,
 //! energy `m v0^2`, contact radius `sqrt(R L)`.
+//!
+//! The half-space is the standard solid of the paper or a general linear-viscoelastic solid
+//! ([`ImpactMaterial`]); for the latter `G_inf` is its relaxed shear modulus `g_inf`, and the
+//! dimensionless groups of Eq. (11) do not exist ([`Impact::groups`] is `None`).
 
 use crate::error::{check, Error, Result};
 use crate::material::{Bulk, GeneralMaterial, Material, Prony};

@@ -27,7 +27,22 @@
 //! plot = "out/force.svg"        # force-time plot
 //! ```
 //!
-//! Unknown keys are errors. Paths are relative to the working directory.
+//! A general material replaces the `[material]` keys by two tables (all forms in README's
+//! scene-format section):
+//!
+//! ```toml
+//! [material.shear]
+//! g_inf = 1.0e3                        # Pa, relaxed shear modulus
+//! terms = [[1.0e7, 1.0e-6]]            # [g_i (Pa), tau_i (s)]; or file = "prony.csv"
+//! # instantaneous = 1.0e7              #   or the normalised FE form G0 (1 - sum g_i (1 - e^(-t/tau_i)))
+//! # ratios = [[0.9, 1.0e-6]]
+//! [material.bulk]                      # exactly one of:
+//! incompressible = true                # or k_0 = ..., poisson = ..., k_inf + terms/file,
+//!                                      # instantaneous + ratios
+//! ```
+//!
+//! Unknown keys are errors. Output paths are relative to the working directory; a Prony table
+//! `file` is relative to the scene file ([`Scene::load`]).
 
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
