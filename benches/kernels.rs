@@ -43,7 +43,7 @@ fn foundation(c: &mut Criterion) {
     let mut g = c.benchmark_group("mdr-foundation");
     g.sample_size(20);
     let imp = impact_case("dissipative-nu045").unwrap().impact().unwrap();
-    let mat = solver::canonical_material(&imp);
+    let mat = solver::canonical_material(&imp).unwrap();
     let layout = mdr::pilot(&mat.prony).unwrap();
     for scheme in [mdr::Scheme::Exponential, mdr::Scheme::Euler] {
         g.bench_function(

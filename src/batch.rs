@@ -167,7 +167,7 @@ pub fn format_line_list(lines: &[u64]) -> String {
 
 /// The physical lines of `bytes` with their 1-based numbers, terminators removed. A line ends at
 /// `\r\n`, `\n` or a lone `\r`; text after the last terminator, if any, is the last line.
-fn physical_lines(bytes: &[u8]) -> Vec<(u64, &[u8])> {
+pub(crate) fn physical_lines(bytes: &[u8]) -> Vec<(u64, &[u8])> {
     let mut lines = Vec::new();
     let mut start = 0;
     let mut i = 0;
@@ -197,7 +197,7 @@ fn physical_lines(bytes: &[u8]) -> Vec<(u64, &[u8])> {
 /// Split one line into comma-separated fields, each trimmed; a field may be quoted (`"..."`,
 /// with `""` for a quote inside) and then may hold commas. An unterminated quote is an error:
 /// a quoted field cannot span lines.
-fn split_fields(line: &str) -> std::result::Result<Vec<String>, String> {
+pub(crate) fn split_fields(line: &str) -> std::result::Result<Vec<String>, String> {
     let mut fields = Vec::new();
     let mut rest = line;
     loop {

@@ -8,9 +8,13 @@
 //! maps back to SI with the scales of [`Scales`]:
 //! length `L = (m v0^2 / (G_inf sqrt(R)))^(2/5)`, time `L / v0`, force `m v0^2 / L`,
 //! energy `m v0^2`, contact radius `sqrt(R L)`.
+//!
+//! The half-space is the standard solid of the paper or a general linear-viscoelastic solid
+//! ([`ImpactMaterial`]); for the latter `G_inf` is its relaxed shear modulus `g_inf`, and the
+//! dimensionless groups of Eq. (11) do not exist ([`Impact::groups`] is `None`).
 
-use crate::error::{check, Result};
-use crate::material::{Bulk, Material, Prony};
+use crate::error::{check, Error, Result};
+use crate::material::{Bulk, GeneralMaterial, Material, Prony};
 
 /// A rigid sphere: mass `m` (kg) and radius `R` (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -108,17 +112,85 @@ pub struct Scales {
     pub modulus: f64,
 }
 
+/// The half-space material of an [`Impact`]: the paper's standard solid, or a general
+/// linear-viscoelastic solid (Prony series in shear and bulk, theory notes §8) of which the
+/// standard solid is the one-term case.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ImpactMaterial {
+    /// Standard solid in shear with elastic bulk (paper Eqs. 1–3).
+    StandardSolid(Material),
+    /// General linear viscoelasticity in shear and bulk.
+    General(GeneralMaterial),
+}
+
+impl ImpactMaterial {
+    /// Relaxed shear modulus `G(inf)` (Pa): the modulus scale `G_inf` of the canonical units.
+    pub fn g_inf(&self) -> f64 {
+        match self {
+            ImpactMaterial::StandardSolid(m) => m.g_inf(),
+            ImpactMaterial::General(m) => m.shear().g_inf(),
+        }
+    }
+}
+
 /// A validated impact: sphere, impact velocity `v0` (m/s) and half-space material.
-#[derive(Debug, Clone, Copy, PartialEq)]
+///
+/// The equivalent relaxation function `G_eq(t)` (SI) is computed once, at construction: the
+/// closed form of theory notes §2 for the standard solid, the Carson-domain composition of
+/// [`GeneralMaterial::equivalent_relaxation`] for a general material.
+#[derive(Debug, Clone, PartialEq)]
 pub struct Impact {
     sphere: Sphere,
     velocity: f64,
-    material: Material,
+    material: ImpactMaterial,
+    /// `G_eq(t)` in SI (Pa, s).
+    equivalent: Prony,
 }
 
 impl Impact {
-    /// Impact of `sphere` at speed `velocity` (m/s, `0 < v0 < inf`) on `material`.
+    /// Impact of `sphere` at speed `velocity` (m/s, `0 < v0 < inf`) on the standard solid
+    /// `material`.
     pub fn new(sphere: Sphere, velocity: f64, material: Material) -> Result<Self> {
+        let equivalent = material.equivalent_relaxation();
+        Self::build(
+            sphere,
+            velocity,
+            ImpactMaterial::StandardSolid(material),
+            equivalent,
+        )
+    }
+
+    /// Impact of `sphere` at speed `velocity` (m/s, `0 < v0 < inf`) on a general
+    /// linear-viscoelastic `material`. Its `G_eq(t)` must stay a valid Prony series in canonical
+    /// units (finite, positive times and relaxed modulus), otherwise [`Error::NonFinite`] or
+    /// [`Error::OutOfRange`].
+    ///
+    /// ```
+    /// # use mdr_impact::{Impact, Material, Sphere};
+    /// let m = Material::with_poisson(1.0e6, 1.0e7, 500.0, 0.49).unwrap();
+    /// let s = Sphere::new(4.11e-3, 5.0e-3).unwrap();
+    /// let general = Impact::with_general(s, 0.99, m.general()).unwrap();
+    /// assert!(general.groups().is_none()); // groups belong to the standard solid
+    /// let standard = Impact::new(s, 0.99, m).unwrap();
+    /// let (a, b) = (general.canonical_relaxation(), standard.canonical_relaxation());
+    /// assert!((a.glassy() - b.glassy()).abs() < 1e-13 * b.glassy());
+    /// ```
+    pub fn with_general(sphere: Sphere, velocity: f64, material: GeneralMaterial) -> Result<Self> {
+        let equivalent = material.equivalent_relaxation()?;
+        Self::build(
+            sphere,
+            velocity,
+            ImpactMaterial::General(material),
+            equivalent,
+        )
+    }
+
+    fn build(
+        sphere: Sphere,
+        velocity: f64,
+        material: ImpactMaterial,
+        equivalent: Prony,
+    ) -> Result<Self> {
         let velocity = check(
             "velocity",
             velocity,
@@ -129,6 +201,7 @@ impl Impact {
             sphere,
             velocity,
             material,
+            equivalent,
         };
         // Extreme magnitudes can leave the f64 range when scaled; refuse them here, loudly.
         let s = imp.scales();
@@ -141,12 +214,28 @@ impl Impact {
                 return Err(crate::Error::NonFinite { what, value: v });
             }
         }
-        let g = imp.groups();
-        if !g.p3.is_finite() {
-            return Err(crate::Error::NonFinite {
-                what: "p3",
-                value: g.p3,
-            });
+        if let Some(g) = imp.groups() {
+            if !g.p3.is_finite() {
+                return Err(crate::Error::NonFinite {
+                    what: "p3",
+                    value: g.p3,
+                });
+            }
+        }
+        // the series the solvers get: every modulus and time finite and positive in canonical
+        // units (extreme times or moduli can underflow or overflow when scaled)
+        let c = imp.canonical_relaxation();
+        for (what, v) in std::iter::once(("canonical G_eq(inf)", c.relaxed)).chain(
+            c.terms.iter().flat_map(|t| {
+                [
+                    ("canonical G_eq time", t.tau),
+                    ("canonical G_eq term", t.coefficient),
+                ]
+            }),
+        ) {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(Error::NonFinite { what, value: v });
+            }
         }
         Ok(imp)
     }
@@ -165,13 +254,55 @@ impl Impact {
         self.velocity
     }
     /// The half-space material.
-    pub fn material(&self) -> Material {
-        self.material
+    pub fn material(&self) -> &ImpactMaterial {
+        &self.material
     }
 
-    /// Dimensionless groups, Eq. (11).
-    pub fn groups(&self) -> Groups {
-        let m = &self.material;
+    /// The standard solid, if the material is one (`None` for a general material, even a
+    /// one-term one: its `G_eq` comes from a different route, see [`Impact::with_general`]).
+    pub fn standard_solid(&self) -> Option<&Material> {
+        match &self.material {
+            ImpactMaterial::StandardSolid(m) => Some(m),
+            ImpactMaterial::General(_) => None,
+        }
+    }
+
+    /// The general material, if the impact has one.
+    pub fn general_material(&self) -> Option<&GeneralMaterial> {
+        match &self.material {
+            ImpactMaterial::General(m) => Some(m),
+            ImpactMaterial::StandardSolid(_) => None,
+        }
+    }
+
+    /// The equivalent relaxation function `G_eq(t)` in SI (Pa, s).
+    pub fn equivalent_relaxation(&self) -> &Prony {
+        &self.equivalent
+    }
+
+    /// True when `G_eq(t)` is constant for `t > 0` (no decaying term): the Hertz closed form
+    /// with the relaxed modulus is exact.
+    pub fn is_elastic(&self) -> bool {
+        match &self.material {
+            ImpactMaterial::StandardSolid(m) => m.is_elastic(),
+            ImpactMaterial::General(_) => self.equivalent.is_elastic(),
+        }
+    }
+
+    /// Plane-strain modulus `E* = 4 G_eq(inf)` (Pa) of the relaxed material (the Hertz limit).
+    pub fn relaxed_effective_modulus(&self) -> f64 {
+        match &self.material {
+            ImpactMaterial::StandardSolid(m) => m.effective_modulus(m.g_inf()),
+            ImpactMaterial::General(_) => 4.0 * self.equivalent.relaxed,
+        }
+    }
+
+    /// Dimensionless groups, Eq. (11), of a standard solid; `None` for a general material,
+    /// which has no such three groups.
+    pub fn groups(&self) -> Option<Groups> {
+        let ImpactMaterial::StandardSolid(m) = &self.material else {
+            return None;
+        };
         let p2 = if m.g_1() == 0.0 {
             f64::INFINITY
         } else {
@@ -183,7 +314,7 @@ impl Impact {
             Bulk::Incompressible => 0.5,
             Bulk::Modulus(_) => m.poisson(),
         };
-        Groups { nu, p2, p3 }
+        Some(Groups { nu, p2, p3 })
     }
 
     /// Scales from canonical units to SI.
@@ -204,12 +335,11 @@ impl Impact {
         }
     }
 
-    /// Equivalent relaxation function in canonical units (moduli / `G_inf`, times / `L/v0`).
+    /// Equivalent relaxation function in canonical units (moduli / `G_inf`, times / `L/v0`),
+    /// `G_inf` the relaxed shear modulus (`g_inf` of a general material).
     pub fn canonical_relaxation(&self) -> Prony {
         let s = self.scales();
-        self.material
-            .equivalent_relaxation()
-            .scaled(self.material.g_inf(), s.time)
+        self.equivalent.scaled(s.modulus, s.time)
     }
 }
 

@@ -38,6 +38,6 @@ pub mod tolerances;
 pub mod validate;
 
 pub use error::{Error, Result};
-pub use impact::{Groups, History, Impact, Outcome, Sphere, Work};
-pub use material::{Bulk, Material, Prony, PronyTerm};
+pub use impact::{Groups, History, Impact, ImpactMaterial, Outcome, Sphere, Work};
+pub use material::{Bulk, GeneralMaterial, Material, Prony, PronyTerm};
 pub use solver::{solve, Resolution, SolveOptions, SolverKind};

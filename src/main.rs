@@ -30,6 +30,9 @@ enum Command {
     Run {
         /// Scene file (TOML); see README for the format.
         scene: Option<PathBuf>,
+        /// Print the outcome as one JSON object (SI units) and nothing else on stdout.
+        #[arg(long)]
+        json: bool,
     },
     /// Coefficient of restitution from the dimensionless groups (Eq. 11).
     Cor {
@@ -222,22 +225,43 @@ fn progress_bar(len: u64, what: &str) -> indicatif::ProgressBar {
 }
 
 fn run(cli: Cli) -> Result<(), Error> {
-    match cli.command.unwrap_or(Command::Run { scene: None }) {
-        Command::Run { scene } => {
+    match cli.command.unwrap_or(Command::Run {
+        scene: None,
+        json: false,
+    }) {
+        Command::Run { scene, json } => {
             let scene = match scene {
                 Some(p) => Scene::load(&p)?,
                 None => Scene::default_scene(),
             };
             let outcome = solve(&scene.impact, &scene.options)?;
-            print!("{}", output::summary(&scene.impact, &outcome));
+            // with --json, stdout holds the JSON object alone; notes go to stderr
+            let note = |k: &str, v: String| {
+                if json {
+                    eprintln!("{k:<28}{v}");
+                } else {
+                    println!("{k:<28}{v}");
+                }
+            };
             if let Some(h) = &outcome.history {
                 if let Some(p) = &scene.history_csv {
                     output::write_history_csv(p, h)?;
-                    println!("{:<28}{}", "history written to", p.display());
                 }
                 if let Some(p) = &scene.plot {
                     plot::force_history_svg(p, h, "Contact force")?;
-                    println!("{:<28}{}", "force plot written to", p.display());
+                }
+            }
+            if json {
+                println!("{}", output::json(&outcome));
+            } else {
+                print!("{}", output::summary(&scene.impact, &outcome));
+            }
+            if outcome.history.is_some() {
+                if let Some(p) = &scene.history_csv {
+                    note("history written to", p.display().to_string());
+                }
+                if let Some(p) = &scene.plot {
+                    note("force plot written to", p.display().to_string());
                 }
             }
             Ok(())

@@ -4,7 +4,8 @@ use std::io::Write;
 use std::path::Path;
 
 use crate::error::{Error, Result};
-use crate::impact::{History, Impact, Outcome};
+use crate::impact::{History, Impact, ImpactMaterial, Outcome};
+use crate::material::{Bulk, BulkRheology};
 
 /// Write a file atomically: the bytes go to a temporary file in the same directory, which is
 /// renamed over `path` only when complete. Parent directories are created.
@@ -51,9 +52,11 @@ pub fn fmt(x: f64) -> String {
 }
 
 /// Human-readable summary of an impact and its outcome, with units.
+///
+/// The line of dimensionless groups (Eq. 11) is printed for the standard solid only; a general
+/// material is described by its number of shear and bulk terms, `g_inf` and the glassy and
+/// relaxed `G_eq`.
 pub fn summary(impact: &Impact, o: &Outcome) -> String {
-    let m = impact.material();
-    let g = impact.groups();
     let s = impact.sphere();
     let mut out = String::new();
     let mut line = |k: &str, v: String| out.push_str(&format!("{k:<28}{v}\n"));
@@ -62,27 +65,72 @@ pub fn summary(impact: &Impact, o: &Outcome) -> String {
         format!("m = {:.6e} kg, R = {:.6e} m", s.mass(), s.radius()),
     );
     line("impact velocity", format!("{:.6e} m/s", impact.velocity()));
-    line(
-        "material",
-        format!(
-            "G_inf = {:.4e} Pa, G_1 = {:.4e} Pa, eta = {:.4e} Pa s, nu = {}",
-            m.g_inf(),
-            m.g_1(),
-            m.eta(),
-            if g.nu == 0.5 {
-                "0.5 (incompressible)".to_string()
+    match impact.material() {
+        ImpactMaterial::StandardSolid(m) => {
+            let nu = if m.bulk() == Bulk::Incompressible {
+                0.5
             } else {
-                format!("{:.6}", g.nu)
-            }
+                m.poisson()
+            };
+            line(
+                "material",
+                format!(
+                    "G_inf = {:.4e} Pa, G_1 = {:.4e} Pa, eta = {:.4e} Pa s, nu = {}",
+                    m.g_inf(),
+                    m.g_1(),
+                    m.eta(),
+                    if nu == 0.5 {
+                        "0.5 (incompressible)".to_string()
+                    } else {
+                        format!("{nu:.6}")
+                    }
+                ),
+            );
+        }
+        ImpactMaterial::General(m) => {
+            let shear = m.shear();
+            let bulk = match m.bulk() {
+                BulkRheology::Incompressible | BulkRheology::Poisson(_) => {
+                    "incompressible".to_string()
+                }
+                BulkRheology::Elastic(k) => format!("elastic, K_0 = {k:.4e} Pa"),
+                BulkRheology::Prony(p) => format!(
+                    "{} term{}, k_inf = {:.4e} Pa",
+                    p.terms().len(),
+                    if p.terms().len() == 1 { "" } else { "s" },
+                    p.k_inf()
+                ),
+            };
+            line(
+                "material",
+                format!(
+                    "general: {} shear term{}, g_inf = {:.4e} Pa; bulk {bulk}",
+                    shear.terms().len(),
+                    if shear.terms().len() == 1 { "" } else { "s" },
+                    shear.g_inf()
+                ),
+            );
+        }
+    }
+    let geq = impact.equivalent_relaxation();
+    match impact.groups() {
+        Some(g) => line(
+            "groups (Eq. 11)",
+            format!(
+                "p1 = nu = {:.6}, p2 = {:.6e}, p3 = {:.6e}",
+                g.nu, g.p2, g.p3
+            ),
         ),
-    );
-    line(
-        "groups (Eq. 11)",
-        format!(
-            "p1 = nu = {:.6}, p2 = {:.6e}, p3 = {:.6e}",
-            g.nu, g.p2, g.p3
+        None => line(
+            "G_eq (theory notes §8)",
+            format!(
+                "{} terms, glassy {:.6e} Pa, relaxed {:.6e} Pa",
+                geq.terms.len(),
+                geq.glassy(),
+                geq.relaxed
+            ),
         ),
-    );
+    }
     line("solver", o.solver.to_string());
     if let Some(why) = &o.fallback {
         line("  instead of fast", why.clone());
@@ -123,4 +171,34 @@ pub fn summary(impact: &Impact, o: &Outcome) -> String {
         ),
     );
     out
+}
+
+/// The outcome as one JSON object (SI units, the keys of [`Outcome`]): `cor`,
+/// `rebound_velocity` (m/s), `contact_time` (s), `max_indentation` (m),
+/// `time_of_max_indentation` (s), `max_force` (N), `max_contact_radius` (m),
+/// `dissipated_energy` (J), `solver`, `estimated_rel_error` (null when the solver gives none),
+/// `fallback` (null, or why `auto` did not answer with `fast`) and `work`
+/// (`steps`, `elements`, `element_updates`, `evaluations`, `levels`).
+pub fn json(o: &Outcome) -> String {
+    serde_json::json!({
+        "cor": o.cor,
+        "rebound_velocity": o.rebound_velocity,
+        "contact_time": o.contact_time,
+        "max_indentation": o.max_indentation,
+        "time_of_max_indentation": o.time_of_max_indentation,
+        "max_force": o.max_force,
+        "max_contact_radius": o.max_contact_radius,
+        "dissipated_energy": o.dissipated_energy,
+        "solver": o.solver,
+        "estimated_rel_error": o.cor_error_estimate,
+        "fallback": o.fallback,
+        "work": {
+            "steps": o.work.steps,
+            "elements": o.work.elements,
+            "element_updates": o.work.element_updates,
+            "evaluations": o.work.evaluations,
+            "levels": o.work.levels,
+        },
+    })
+    .to_string()
 }

@@ -27,14 +27,29 @@
 //! plot = "out/force.svg"        # force-time plot
 //! ```
 //!
-//! Unknown keys are errors. Paths are relative to the working directory.
+//! A general material replaces the `[material]` keys by two tables (all forms in README's
+//! scene-format section):
+//!
+//! ```toml
+//! [material.shear]
+//! g_inf = 1.0e3                        # Pa, relaxed shear modulus
+//! terms = [[1.0e7, 1.0e-6]]            # [g_i (Pa), tau_i (s)]; or file = "prony.csv"
+//! # instantaneous = 1.0e7              #   or the normalised FE form G0 (1 - sum g_i (1 - e^(-t/tau_i)))
+//! # ratios = [[0.9, 1.0e-6]]
+//! [material.bulk]                      # exactly one of:
+//! incompressible = true                # or k_0 = ..., poisson = ..., k_inf + terms/file,
+//!                                      # instantaneous + ratios
+//! ```
+//!
+//! Unknown keys are errors. Output paths are relative to the working directory; a Prony table
+//! `file` is relative to the scene file ([`Scene::load`]).
 
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
 use crate::error::{escape_text, Error, Result};
 use crate::impact::{Impact, Sphere};
-use crate::material::Material;
+use crate::material::{BulkProny, BulkRheology, GeneralMaterial, Material, ShearProny};
 use crate::solver::{Resolution, SolveOptions, SolverKind};
 
 /// The embedded default scene: a 10 mm steel ball (4.11 g) dropped from 5 cm on a thick,
@@ -69,11 +84,39 @@ struct RawImpact {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawMaterial {
-    g_inf: f64,
-    g_1: f64,
-    eta: f64,
+    g_inf: Option<f64>,
+    g_1: Option<f64>,
+    eta: Option<f64>,
     poisson: Option<f64>,
     k_0: Option<f64>,
+    shear: Option<RawShear>,
+    bulk: Option<RawBulk>,
+}
+
+/// `[material.shear]`: `g_inf` with `terms` or `file`, or `instantaneous` with `ratios`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawShear {
+    g_inf: Option<f64>,
+    terms: Option<Vec<Vec<f64>>>,
+    file: Option<PathBuf>,
+    instantaneous: Option<f64>,
+    ratios: Option<Vec<Vec<f64>>>,
+}
+
+/// `[material.bulk]`: one of `incompressible = true`, `k_0`, `poisson`, `k_inf` with `terms`
+/// or `file`, `instantaneous` with `ratios`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawBulk {
+    incompressible: Option<bool>,
+    k_0: Option<f64>,
+    poisson: Option<f64>,
+    k_inf: Option<f64>,
+    terms: Option<Vec<Vec<f64>>>,
+    file: Option<PathBuf>,
+    instantaneous: Option<f64>,
+    ratios: Option<Vec<Vec<f64>>>,
 }
 
 #[derive(Debug, Deserialize, Default)]
@@ -106,8 +149,15 @@ pub struct Scene {
 }
 
 impl Scene {
-    /// Parse and validate a scene from TOML text.
+    /// Parse and validate a scene from TOML text; a Prony table `file` is read relative to the
+    /// working directory (see [`Scene::parse_in`]).
     pub fn parse(text: &str) -> Result<Self> {
+        Self::parse_in(text, Path::new(""))
+    }
+
+    /// Parse and validate a scene from TOML text, reading Prony table files (`file = ...` in
+    /// `[material.shear]` or `[material.bulk]`) relative to the folder `base`.
+    pub fn parse_in(text: &str, base: &Path) -> Result<Self> {
         let raw: RawScene = toml::from_str(text).map_err(|e| {
             // one line: toml's message spans several lines with a source excerpt
             let msg = escape_text(e.message().trim_end());
@@ -120,22 +170,7 @@ impl Scene {
             }
         })?;
         let sphere = Sphere::new(raw.sphere.mass, raw.sphere.radius)?;
-        let m = &raw.material;
-        let material = match (m.poisson, m.k_0) {
-            (Some(nu), None) => Material::with_poisson(m.g_inf, m.g_1, m.eta, nu)?,
-            (None, Some(k)) => Material::new(m.g_inf, m.g_1, m.eta, k)?,
-            (Some(_), Some(_)) => {
-                return Err(Error::Scene(
-                    "[material]: give either poisson or k_0, not both".into(),
-                ))
-            }
-            (None, None) => {
-                return Err(Error::Scene(
-                    "[material]: missing poisson (-1 < nu <= 0.5) or k_0 (Pa)".into(),
-                ))
-            }
-        };
-        let impact = Impact::new(sphere, raw.impact.velocity, material)?;
+        let impact = impact_of(sphere, raw.impact.velocity, &raw.material, base)?;
         let mut options = SolveOptions::default();
         if let Some(name) = &raw.solver.name {
             options.solver = name.parse::<SolverKind>().map_err(|_| {
@@ -178,7 +213,8 @@ impl Scene {
     /// Read and parse a scene file.
     pub fn load(path: &Path) -> Result<Self> {
         let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
-        Self::parse(&text).map_err(|e| match e {
+        let base = path.parent().unwrap_or(Path::new(""));
+        Self::parse_in(&text, base).map_err(|e| match e {
             Error::Scene(m) => Error::Scene(format!("{}: {m}", path.display())),
             other => other,
         })
@@ -188,4 +224,337 @@ impl Scene {
     pub fn default_scene() -> Self {
         Self::parse(DEFAULT_SCENE).expect("the embedded default scene is valid")
     }
+}
+
+/// The impact of a scene: the standard solid of `[material]` (`g_inf`, `g_1`, `eta`, `poisson`
+/// or `k_0`), or the general material of `[material.shear]` and `[material.bulk]`.
+fn impact_of(sphere: Sphere, velocity: f64, m: &RawMaterial, base: &Path) -> Result<Impact> {
+    let standard = [
+        ("g_inf", m.g_inf),
+        ("g_1", m.g_1),
+        ("eta", m.eta),
+        ("poisson", m.poisson),
+        ("k_0", m.k_0),
+    ];
+    let given: Vec<&str> = standard
+        .iter()
+        .filter(|(_, v)| v.is_some())
+        .map(|(k, _)| *k)
+        .collect();
+    if m.shear.is_some() || m.bulk.is_some() {
+        if !given.is_empty() {
+            return Err(scene_error(format!(
+                "[material]: {} cannot be mixed with [material.shear]/[material.bulk]: give the \
+                 standard solid (g_inf, g_1, eta, poisson or k_0 in [material]) or the two tables",
+                given.join(", ")
+            )));
+        }
+        let (Some(shear), Some(bulk)) = (&m.shear, &m.bulk) else {
+            let missing = if m.shear.is_none() {
+                "[material.shear]"
+            } else {
+                "[material.bulk]"
+            };
+            return Err(scene_error(format!(
+                "[material]: missing {missing}: a general material needs both [material.shear] \
+                 and [material.bulk]"
+            )));
+        };
+        let material = general_material(shear, bulk, base)?;
+        return Impact::with_general(sphere, velocity, material);
+    }
+    for (key, value) in [("g_inf", m.g_inf), ("g_1", m.g_1), ("eta", m.eta)] {
+        if value.is_none() {
+            return Err(scene_error(format!(
+                "[material]: missing {key} (standard solid: g_inf, g_1, eta and poisson or k_0; \
+                 or the tables [material.shear] and [material.bulk])"
+            )));
+        }
+    }
+    let (g_inf, g_1, eta) = (
+        m.g_inf.unwrap_or_default(),
+        m.g_1.unwrap_or_default(),
+        m.eta.unwrap_or_default(),
+    );
+    let material = match (m.poisson, m.k_0) {
+        (Some(nu), None) => Material::with_poisson(g_inf, g_1, eta, nu)?,
+        (None, Some(k)) => Material::new(g_inf, g_1, eta, k)?,
+        (Some(_), Some(_)) => {
+            return Err(scene_error(
+                "[material]: give either poisson or k_0, not both".into(),
+            ))
+        }
+        (None, None) => {
+            return Err(scene_error(
+                "[material]: missing poisson (-1 < nu <= 0.5) or k_0 (Pa)".into(),
+            ))
+        }
+    };
+    Impact::new(sphere, velocity, material)
+}
+
+fn scene_error(message: String) -> Error {
+    Error::Scene(message)
+}
+
+/// Which table a Prony series comes from, with the names its errors use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Table {
+    Shear,
+    Bulk,
+}
+
+impl Table {
+    fn name(self) -> &'static str {
+        match self {
+            Table::Shear => "[material.shear]",
+            Table::Bulk => "[material.bulk]",
+        }
+    }
+    /// The relaxed-modulus key (`g_inf`, `k_inf`).
+    fn relaxed(self) -> &'static str {
+        match self {
+            Table::Shear => "g_inf",
+            Table::Bulk => "k_inf",
+        }
+    }
+    /// The full name of `field` of this table for error messages (`&'static str`, as
+    /// [`Error`] keeps it).
+    fn field(self, field: &str) -> &'static str {
+        match (self, field) {
+            (Table::Shear, "g_inf") => "[material.shear] g_inf",
+            (Table::Shear, "instantaneous") => "[material.shear] instantaneous",
+            (Table::Shear, "ratios") => "[material.shear] ratios",
+            (Table::Shear, "ratios.g_i") => "[material.shear] ratios: g_i",
+            (Table::Shear, "ratios.tau_i") => "[material.shear] ratios: tau_i",
+            (Table::Shear, "tau_i") => "[material.shear] terms: tau_i",
+            (Table::Shear, _) => "[material.shear] terms: g_i",
+            (Table::Bulk, "k_inf") => "[material.bulk] k_inf",
+            (Table::Bulk, "k_0") => "[material.bulk] k_0",
+            (Table::Bulk, "nu") => "[material.bulk] poisson",
+            (Table::Bulk, "instantaneous") => "[material.bulk] instantaneous",
+            (Table::Bulk, "ratios") => "[material.bulk] ratios",
+            (Table::Bulk, "ratios.g_i") => "[material.bulk] ratios: k_j",
+            (Table::Bulk, "ratios.tau_i") => "[material.bulk] ratios: theta_j",
+            (Table::Bulk, "theta_j") => "[material.bulk] terms: theta_j",
+            (Table::Bulk, _) => "[material.bulk] terms: k_j",
+        }
+    }
+    /// `e` with its field renamed to the scene key it came from.
+    fn rename(self, e: Error) -> Error {
+        match e {
+            Error::OutOfRange {
+                field,
+                value,
+                allowed,
+            } => Error::OutOfRange {
+                field: self.field(field),
+                value,
+                allowed,
+            },
+            Error::PronyTerm {
+                field,
+                index,
+                value,
+                allowed,
+            } => Error::PronyTerm {
+                field: self.field(field),
+                index,
+                value,
+                allowed,
+            },
+            other => other,
+        }
+    }
+}
+
+/// The keys of a Prony-series form (shared by `[material.shear]` and `[material.bulk]`).
+struct SeriesKeys<'a> {
+    relaxed: Option<f64>,
+    terms: &'a Option<Vec<Vec<f64>>>,
+    file: &'a Option<PathBuf>,
+    instantaneous: Option<f64>,
+    ratios: &'a Option<Vec<Vec<f64>>>,
+}
+
+/// The relaxed modulus (Pa) and the `(modulus` (Pa), `time` (s)`)` pairs of a series form:
+/// `relaxed` with `terms` or `file`, or `instantaneous` with `ratios`
+/// (`G(t) = G0 (1 - sum g_i (1 - exp(-t / tau_i)))`: relaxed `G0 (1 - sum g_i)`, moduli
+/// `g_i G0`). Only checks what the forms need; the moduli and times themselves are checked by
+/// the series constructors.
+fn series_of(table: Table, k: &SeriesKeys<'_>, base: &Path) -> Result<(f64, Vec<(f64, f64)>)> {
+    let t = table.name();
+    let r = table.relaxed();
+    if k.instantaneous.is_some() || k.ratios.is_some() {
+        if k.relaxed.is_some() || k.terms.is_some() || k.file.is_some() {
+            return Err(scene_error(format!(
+                "{t}: instantaneous/ratios (normalised form) cannot be mixed with {r}, terms or \
+                 file"
+            )));
+        }
+        let (Some(g0), Some(ratios)) = (k.instantaneous, k.ratios) else {
+            let missing = if k.instantaneous.is_none() {
+                "instantaneous (Pa)"
+            } else {
+                "ratios = [[ratio, time], ...]"
+            };
+            return Err(scene_error(format!(
+                "{t}: missing {missing} (the normalised form needs instantaneous and ratios)"
+            )));
+        };
+        let g0 = crate::error::check(
+            table.field("instantaneous"),
+            g0,
+            g0 > 0.0,
+            "0 < instantaneous < inf (Pa)",
+        )?;
+        let pairs = pairs_of(t, "ratios", ratios)?;
+        let mut sum = 0.0;
+        for (index, &(g, tau)) in pairs.iter().enumerate() {
+            if !(g.is_finite() && (0.0..1.0).contains(&g)) {
+                return Err(Error::PronyTerm {
+                    field: table.field("ratios.g_i"),
+                    index,
+                    value: g,
+                    allowed: "0 <= ratio < 1",
+                });
+            }
+            if !(tau.is_finite() && tau > 0.0) {
+                return Err(Error::PronyTerm {
+                    field: table.field("ratios.tau_i"),
+                    index,
+                    value: tau,
+                    allowed: "0 < time < inf (s)",
+                });
+            }
+            sum += g;
+        }
+        if sum >= 1.0 {
+            return Err(Error::OutOfRange {
+                field: table.field("ratios"),
+                value: sum,
+                allowed: "a sum of the ratios below 1 (relaxed modulus = instantaneous \
+                          (1 - sum) > 0)",
+            });
+        }
+        let relaxed = g0 * (1.0 - sum);
+        let moduli = pairs.iter().map(|&(g, tau)| (g * g0, tau)).collect();
+        return Ok((relaxed, moduli));
+    }
+    let Some(relaxed) = k.relaxed else {
+        return Err(scene_error(format!(
+            "{t}: missing {r} (Pa, the relaxed modulus) with terms = [[modulus, time], ...] or \
+             file = \"table.csv\"; or instantaneous with ratios"
+        )));
+    };
+    let pairs = match (k.terms, k.file) {
+        (Some(terms), None) => pairs_of(t, "terms", terms)?,
+        (None, Some(file)) => {
+            if file.as_os_str().is_empty() {
+                return Err(scene_error(format!(
+                    "{t} file is an empty path: give a file name"
+                )));
+            }
+            crate::material::table::read_prony_table(&base.join(file))?
+        }
+        (Some(_), Some(_)) => {
+            return Err(scene_error(format!(
+                "{t}: give either terms or file, not both"
+            )))
+        }
+        (None, None) => {
+            return Err(scene_error(format!(
+                "{t}: missing terms = [[modulus, time], ...] (terms = [] for none) or \
+                 file = \"table.csv\" beside {r}"
+            )))
+        }
+    };
+    Ok((relaxed, pairs))
+}
+
+/// `[[a, b], ...]` as pairs; a row that is not a pair is an error naming `table key[index]`.
+fn pairs_of(table: &str, key: &str, rows: &[Vec<f64>]) -> Result<Vec<(f64, f64)>> {
+    rows.iter()
+        .enumerate()
+        .map(|(i, row)| match row.as_slice() {
+            &[a, b] => Ok((a, b)),
+            _ => Err(scene_error(format!(
+                "{table} {key}[{i}]: expected a pair [modulus, time], found {} numbers",
+                row.len()
+            ))),
+        })
+        .collect()
+}
+
+/// The general material of `[material.shear]` and `[material.bulk]`.
+fn general_material(shear: &RawShear, bulk: &RawBulk, base: &Path) -> Result<GeneralMaterial> {
+    let (g_inf, terms) = series_of(
+        Table::Shear,
+        &SeriesKeys {
+            relaxed: shear.g_inf,
+            terms: &shear.terms,
+            file: &shear.file,
+            instantaneous: shear.instantaneous,
+            ratios: &shear.ratios,
+        },
+        base,
+    )?;
+    let shear = ShearProny::new(g_inf, &terms).map_err(|e| Table::Shear.rename(e))?;
+    let series_given = bulk.k_inf.is_some()
+        || bulk.terms.is_some()
+        || bulk.file.is_some()
+        || bulk.instantaneous.is_some()
+        || bulk.ratios.is_some();
+    let forms: Vec<&str> = [
+        ("incompressible", bulk.incompressible.is_some()),
+        ("k_0", bulk.k_0.is_some()),
+        ("poisson", bulk.poisson.is_some()),
+        (
+            "a relaxing bulk (k_inf/terms/file/instantaneous/ratios)",
+            series_given,
+        ),
+    ]
+    .iter()
+    .filter(|(_, given)| *given)
+    .map(|(name, _)| *name)
+    .collect();
+    if forms.len() != 1 {
+        let found = if forms.is_empty() {
+            "none".to_string()
+        } else {
+            forms.join(" and ")
+        };
+        return Err(scene_error(format!(
+            "[material.bulk]: give exactly one of incompressible = true, k_0, poisson, k_inf with \
+             terms or file, instantaneous with ratios; found {found}"
+        )));
+    }
+    let rheology = if let Some(flag) = bulk.incompressible {
+        if !flag {
+            return Err(scene_error(
+                "[material.bulk] incompressible = false: give k_0, poisson, or a relaxing bulk \
+                 instead"
+                    .into(),
+            ));
+        }
+        BulkRheology::Incompressible
+    } else if let Some(k) = bulk.k_0 {
+        BulkRheology::Elastic(k)
+    } else if let Some(nu) = bulk.poisson {
+        BulkRheology::Poisson(nu)
+    } else {
+        let (k_inf, terms) = series_of(
+            Table::Bulk,
+            &SeriesKeys {
+                relaxed: bulk.k_inf,
+                terms: &bulk.terms,
+                file: &bulk.file,
+                instantaneous: bulk.instantaneous,
+                ratios: &bulk.ratios,
+            },
+            base,
+        )?;
+        BulkRheology::Prony(BulkProny::new(k_inf, &terms).map_err(|e| Table::Bulk.rename(e))?)
+    };
+    GeneralMaterial::new(shear, rheology).map_err(|e| Table::Bulk.rename(e))
 }

@@ -146,13 +146,17 @@ impl SolveOptions {
 
 /// Solve an impact. Elastic materials use the Hertz closed form whatever the solver.
 ///
+/// A general material (Prony series in shear and bulk) is solved by `fast` and `reference`
+/// (and `auto`) from its canonical `G_eq` series; `mdr` and `mdr-euler` refuse it
+/// ([`Error::Unsupported`]): their element network is the standard solid's.
+///
 /// In nearly elastic cases a solver's discretisation error can push the CoR above 1; since
 /// `e <= 1` holds exactly (a passive material dissipates a non-negative energy), such a value is
 /// projected onto `(0, 1]` (`e = 1`, no dissipated energy); the error estimate is kept as
 /// computed, and the projection only ever reduces the error.
 pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
     opts.validate()?;
-    if impact.material().is_elastic() && opts.resolution.is_none() {
+    if impact.is_elastic() && opts.resolution.is_none() {
         // nothing to integrate: the Hertz closed form is exact
         let o = theory::hertz_outcome(
             impact,
@@ -171,57 +175,80 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
     Ok(canonical.to_si(impact))
 }
 
-/// The impact's material in canonical units, in the forms the MDR schemes need.
-pub fn canonical_material(impact: &Impact) -> mdr::CanonicalMaterial {
+/// The one-line refusal of the MDR schemes for a general material.
+pub const MDR_GENERAL_UNSUPPORTED: &str = "mdr: general Prony materials are not supported yet \
+     (the element network is the standard solid's); use fast or reference";
+
+/// The impact's material in canonical units, in the forms the MDR schemes need; a general
+/// material has no element network yet ([`Error::Unsupported`], [`MDR_GENERAL_UNSUPPORTED`]).
+pub fn canonical_material(impact: &Impact) -> Result<mdr::CanonicalMaterial> {
     let s = impact.scales();
-    mdr::CanonicalMaterial {
+    let Some(m) = impact.standard_solid() else {
+        return Err(Error::Unsupported(MDR_GENERAL_UNSUPPORTED.to_string()));
+    };
+    Ok(mdr::CanonicalMaterial {
         prony: impact.canonical_relaxation(),
-        network: ElementNetwork::new(&impact.material()).scaled(s.modulus, s.time),
-    }
+        network: ElementNetwork::new(m).scaled(s.modulus, s.time),
+    })
+}
+
+/// Refusals of `fast` after which `auto` asks `reference`: accuracy or work it could not reach,
+/// and a series with more terms than it accepts ([`fast::FAST_MAX_TERMS`]; a general material's
+/// `G_eq` can have many).
+fn fast_refusal_falls_back(e: &Error) -> bool {
+    matches!(
+        e,
+        Error::AccuracyNotReached { .. }
+            | Error::NoConvergence { .. }
+            | Error::WorkLimit { .. }
+            | Error::StepSizeTooSmall { .. }
+            | Error::OutOfRange {
+                field: "prony terms",
+                ..
+            }
+    )
 }
 
 fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
-    let material = canonical_material(impact);
+    let prony = impact.canonical_relaxation();
     let scheme = match (opts.solver, opts.resolution) {
         (SolverKind::MdrEuler, _) => mdr::Scheme::Euler,
         (SolverKind::Mdr, _) | (SolverKind::Auto, Some(_)) => mdr::Scheme::Exponential,
         (SolverKind::Reference, _) | (SolverKind::Auto, None) if opts.history => {
             // histories on a uniform grid, forces evaluated from the dense solution
             return theory::reference::impact_sampled(
-                &material.prony,
+                &prony,
                 opts.rtol.max(1e-13),
                 tolerances::HISTORY_SAMPLES,
             );
         }
         (SolverKind::Reference, _) => {
-            return theory::impact(&material.prony, opts.rtol, false);
+            return theory::impact(&prony, opts.rtol, false);
         }
-        (SolverKind::Fast, _) => return fast::impact(&material.prony, opts.rtol, opts.history),
+        (SolverKind::Fast, _) => return fast::impact(&prony, opts.rtol, opts.history),
         (SolverKind::Auto, None) => {
             // The cheapest solver for any rtol is the reduced one, which verifies itself by
             // successively tighter solves; should it refuse, the reference solver (a different
             // integrator, verified the same way) answers instead, and the outcome says why.
-            return match fast::impact(&material.prony, opts.rtol, opts.history) {
+            return match fast::impact(&prony, opts.rtol, opts.history) {
                 Ok(o) => Ok(o),
-                Err(
-                    first @ (Error::AccuracyNotReached { .. }
-                    | Error::NoConvergence { .. }
-                    | Error::WorkLimit { .. }
-                    | Error::StepSizeTooSmall { .. }),
-                ) => match theory::impact(&material.prony, opts.rtol, opts.history) {
-                    Ok(mut o) => {
-                        o.fallback = Some(first.to_string());
-                        Ok(o)
+                Err(first) if fast_refusal_falls_back(&first) => {
+                    match theory::impact(&prony, opts.rtol, opts.history) {
+                        Ok(mut o) => {
+                            o.fallback = Some(first.to_string());
+                            Ok(o)
+                        }
+                        Err(second) => Err(Error::NoSolver {
+                            first: Box::new(first),
+                            second: Box::new(second),
+                        }),
                     }
-                    Err(second) => Err(Error::NoSolver {
-                        first: Box::new(first),
-                        second: Box::new(second),
-                    }),
-                },
+                }
                 Err(e) => Err(e),
             };
         }
     };
+    let material = canonical_material(impact)?;
     match opts.resolution {
         Some(r) => {
             let needed = (r.elements as u64).saturating_mul(r.steps as u64);

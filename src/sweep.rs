@@ -565,7 +565,9 @@ pub fn solve_point(p: &Point, opts: &SweepOptions) -> Record {
             Some(seed) => dimensional_impact(g, seed, p.index)?,
             None => Impact::from_groups(g)?,
         };
-        let m = impact.material();
+        let m = impact
+            .standard_solid()
+            .expect("sweeps are over the standard solid's groups");
         let s = impact.sphere();
         rec.inputs = [
             s.mass(),

@@ -438,7 +438,7 @@ pub fn impact_refinement(
     levels: usize,
 ) -> Result<Refinement> {
     let imp = case.impact()?;
-    let mat = canonical_material(&imp);
+    let mat = canonical_material(&imp)?;
     let layout = mdr::pilot(&mat.prony)?;
     let reference = reference_outcome(case)?.cor;
     (0..levels)

@@ -377,3 +377,74 @@ fn stress_smoke_fills_its_section_and_keeps_the_rest() {
     let o = run(&["stress", "--rows", "4", "--report", "N.md"], dir.path());
     assert_one_line_error(&o, "no stress markers");
 }
+
+/// `run --json`: one JSON object on stdout with the outcome's keys (SI), for the standard solid
+/// and for a general material; the notes about written files go to stderr.
+#[test]
+fn run_json_prints_one_object() {
+    let dir = tempfile::tempdir().unwrap();
+    // the default scene writes a history and a plot: their notes must not reach stdout
+    let o = run(&["run", "--json"], dir.path());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout.clone()).unwrap();
+    assert_eq!(out.trim_end().lines().count(), 1, "{out}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    for key in [
+        "cor",
+        "contact_time",
+        "max_indentation",
+        "max_force",
+        "estimated_rel_error",
+        "rebound_velocity",
+        "time_of_max_indentation",
+        "max_contact_radius",
+        "dissipated_energy",
+    ] {
+        assert!(v[key].is_number(), "{key}: {v}");
+    }
+    assert!(v["solver"].is_string());
+    assert!(v["fallback"].is_null());
+    for key in ["steps", "evaluations", "levels"] {
+        assert!(v["work"][key].is_u64(), "work.{key}: {v}");
+    }
+    assert!(stderr(&o).contains("history written to"));
+    assert!(dir.path().join("out/default-history.csv").exists());
+    let cor = v["cor"].as_f64().unwrap();
+    assert!(cor > 0.0 && cor < 1.0);
+
+    // a general material with more G_eq terms than fast accepts: auto falls back, says why
+    let terms: Vec<String> = (0..10)
+        .map(|i| {
+            format!(
+                "[{:e}, {:e}]",
+                2.0e6 / (1.0 + i as f64),
+                1.0e-7 * 10f64.powi(i)
+            )
+        })
+        .collect();
+    std::fs::write(
+        dir.path().join("general.toml"),
+        format!(
+            "[sphere]\nmass = 4.11e-3\nradius = 5.0e-3\n[impact]\nvelocity = 0.99\n\
+             [material.shear]\ng_inf = 1.0e6\nterms = [{}]\n[material.bulk]\nincompressible = true\n\
+             [solver]\nrtol = 1e-5\n",
+            terms.join(", ")
+        ),
+    )
+    .unwrap();
+    let o = run(&["run", "general.toml", "--json"], dir.path());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(v["estimated_rel_error"].as_f64().unwrap() <= 1e-5);
+    if v["solver"] == "reference" {
+        assert!(v["fallback"].as_str().unwrap().contains("prony terms"));
+    }
+    // the summary names the general material
+    let o = run(&["run", "general.toml"], dir.path());
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(out.contains("general: 10 shear terms"), "{out}");
+    assert!(
+        out.contains("G_eq") && !out.contains("groups (Eq. 11)"),
+        "{out}"
+    );
+}

@@ -20,6 +20,7 @@ use crate::error::{check, Error, Result};
 
 pub mod carson;
 pub mod rheology;
+pub mod table;
 
 pub use rheology::{BulkProny, BulkRheology, GeneralMaterial, ShearProny};
 

@@ -61,12 +61,11 @@ impl HertzImpact {
     /// The elastic impact of `impact` with the *relaxed* modulus `G_inf` (SI), i.e. the limit
     /// `p3 -> 0` (or an elastic material).
     pub fn relaxed(impact: &Impact) -> Result<Self> {
-        let m = impact.material();
         Self::new(
             impact.sphere().mass(),
             impact.sphere().radius(),
             impact.velocity(),
-            m.effective_modulus(m.g_inf()),
+            impact.relaxed_effective_modulus(),
         )
     }
 

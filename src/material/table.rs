@@ -1,0 +1,123 @@
+//! Readers of Prony tables as material-testing software exports them.
+//!
+//! A DMA or relaxation fit is commonly exported as a two-column CSV of the discrete spectrum,
+//! one Maxwell branch per row, relaxation time first:
+//!
+//! ```text
+//! tau,modulus
+//! 1.0e-6,2.5e8
+//! 1.0e-4,4.0e7
+//! ```
+//!
+//! SI units (s, Pa). The relaxed modulus is not part of the table; a scene gives it beside the
+//! file (`g_inf` or `k_inf`). Lines and fields follow the rules of the `cor --input` reader
+//! ([`crate::batch::parse_rows`]): UTF-8 with an optional byte-order mark, `\n`, `\r\n` or `\r`
+//! line ends, trimmed and optionally quoted fields; empty lines are skipped here.
+
+use std::path::Path;
+
+use crate::batch::{physical_lines, split_fields};
+use crate::error::{escape_text, Error, Result};
+
+/// The header of a Prony table file.
+pub const PRONY_HEADER: [&str; 2] = ["tau", "modulus"];
+
+/// Read a `tau,modulus` table from a file; see [`parse_prony_table`].
+pub fn read_prony_table(path: &Path) -> Result<Vec<(f64, f64)>> {
+    let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+    parse_prony_table(&path.display().to_string(), &bytes)
+}
+
+/// Parse the bytes of a `tau,modulus` table named `file` (the name is used in messages) into
+/// `(modulus` (Pa), `tau` (s)`)` pairs in file order, the order of
+/// [`super::ShearProny::new`] and [`super::BulkProny::new`].
+///
+/// Every row needs exactly two finite numbers, `tau > 0` and `modulus >= 0`; a bad row is an
+/// [`Error::Csv`] naming its physical line. At least one row is required.
+///
+/// ```
+/// # use mdr_impact::material::table::parse_prony_table;
+/// let t = parse_prony_table("t.csv", b"tau,modulus\r\n1e-3,2e6\n\n0.1,5e5\n").unwrap();
+/// assert_eq!(t, vec![(2e6, 1e-3), (5e5, 0.1)]);
+/// assert!(parse_prony_table("t.csv", b"tau,modulus\n1e-3,-2e6\n").is_err());
+/// ```
+pub fn parse_prony_table(file: &str, bytes: &[u8]) -> Result<Vec<(f64, f64)>> {
+    let bad = |line: u64, message: String| Error::Csv {
+        file: file.to_string(),
+        line,
+        message,
+    };
+    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
+    let mut header_seen = false;
+    let mut out = Vec::new();
+    for (line, raw) in physical_lines(bytes) {
+        if raw.is_empty() {
+            continue;
+        }
+        let text = std::str::from_utf8(raw).map_err(|e| {
+            bad(
+                line,
+                format!("not valid UTF-8 (byte {} of the line)", e.valid_up_to() + 1),
+            )
+        })?;
+        let fields = split_fields(text).map_err(|m| bad(line, m))?;
+        if !header_seen {
+            if fields != PRONY_HEADER {
+                return Err(bad(
+                    line,
+                    format!(
+                        "header must be 'tau,modulus' (s, Pa), found '{}'",
+                        escape_text(&fields.join(","))
+                    ),
+                ));
+            }
+            header_seen = true;
+            continue;
+        }
+        if fields.len() != 2 {
+            return Err(bad(
+                line,
+                format!(
+                    "expected 2 fields (tau,modulus), found {}: '{}'",
+                    fields.len(),
+                    escape_text(text)
+                ),
+            ));
+        }
+        let mut v = [0.0; 2];
+        for (j, name) in PRONY_HEADER.iter().enumerate() {
+            let s = fields[j].as_str();
+            let x = s.parse::<f64>().map_err(|_| {
+                bad(
+                    line,
+                    format!("{name} = '{}' is not a number", escape_text(s)),
+                )
+            })?;
+            v[j] = x;
+        }
+        let [tau, modulus] = v;
+        if !(tau.is_finite() && tau > 0.0) {
+            return Err(bad(
+                line,
+                format!("tau = {tau:e} is out of range: allowed 0 < tau < inf (s)"),
+            ));
+        }
+        if !(modulus.is_finite() && modulus >= 0.0) {
+            return Err(bad(
+                line,
+                format!("modulus = {modulus:e} is out of range: allowed 0 <= modulus < inf (Pa)"),
+            ));
+        }
+        out.push((modulus, tau));
+    }
+    if !header_seen {
+        return Err(bad(
+            1,
+            "no header: expected 'tau,modulus' (the file is empty)".into(),
+        ));
+    }
+    if out.is_empty() {
+        return Err(bad(1, "no rows after the header 'tau,modulus'".into()));
+    }
+    Ok(out)
+}
