@@ -412,7 +412,8 @@ fn run_json_prints_one_object() {
     let cor = v["cor"].as_f64().unwrap();
     assert!(cor > 0.0 && cor < 1.0);
 
-    // a general material with more G_eq terms than fast accepts: auto falls back, says why
+    // a general material with 10 G_eq terms (answered by fast; with more than FAST_MAX_TERMS
+    // auto would fall back to reference and say why)
     let terms: Vec<String> = (0..10)
         .map(|i| {
             format!(
