@@ -9,8 +9,9 @@ use rayon::prelude::*;
 use std::io::Write;
 use std::path::Path;
 
-use crate::error::{escape_text, Error, Result};
+use crate::error::{Error, Result};
 use crate::impact::{Groups, Impact, Outcome};
+use crate::lines::parse_numeric;
 use crate::output::fmt;
 use crate::solver::{solve, SolveOptions};
 
@@ -46,102 +47,31 @@ pub fn read_rows(path: &Path) -> Result<Rows> {
     parse_rows(&path.display().to_string(), &bytes)
 }
 
-/// Parse the bytes of an input file named `file` (the name is only used in messages).
-///
-/// - A UTF-8 byte-order mark at the start is ignored.
-/// - Lines end at `\r\n`, `\n` or a lone `\r`; line numbers in messages and in [`Row::line`]
-///   count physical lines from 1, blank lines included. A final line terminator is optional.
-/// - An empty line is skipped and its number reported in [`Rows::skipped_blank_lines`]; a line
-///   of only spaces or commas is not blank but an error.
-/// - The first non-empty line is the header `nu,p2,p3`; every other line holds exactly three
-///   comma-separated fields. Fields are trimmed and may be quoted (`"0.45"`, `""` for a quote
-///   inside); a quoted field cannot span lines.
-/// - Every value must be a finite number, and the three must be valid [`Groups`].
-/// - Any bad line (invalid UTF-8 included) is an [`Error::Csv`] naming its line; text quoted in a
-///   message is escaped with [`escape_text`].
+/// Parse the bytes of an input file named `file` (the name is only used in messages): the
+/// line rules of [`crate::lines`] (byte-order mark, `\n`/`\r\n`/`\r` line ends, physical line
+/// numbers in messages and in [`Row::line`], empty lines skipped and reported in
+/// [`Rows::skipped_blank_lines`], trimmed and optionally quoted fields, finite numbers) with the
+/// header `nu,p2,p3`, and every row valid [`Groups`]; any bad line is an [`Error::Csv`] naming
+/// its line.
 pub fn parse_rows(file: &str, bytes: &[u8]) -> Result<Rows> {
-    let bad = |line: u64, message: String| Error::Csv {
-        file: file.to_string(),
-        line,
-        message,
+    let table = parse_numeric(file, bytes, &HEADER)?;
+    let mut out = Rows {
+        rows: Vec::with_capacity(table.rows.len()),
+        skipped_blank_lines: table.skipped_blank_lines,
     };
-    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
-    let mut out = Rows::default();
-    let mut header_seen = false;
-    for (line, raw) in physical_lines(bytes) {
-        if raw.is_empty() {
-            out.skipped_blank_lines.push(line);
-            continue;
-        }
-        let text = std::str::from_utf8(raw).map_err(|e| {
-            bad(
-                line,
-                format!("not valid UTF-8 (byte {} of the line)", e.valid_up_to() + 1),
-            )
-        })?;
-        let fields = split_fields(text).map_err(|m| bad(line, m))?;
-        if !header_seen {
-            if fields != HEADER {
-                return Err(bad(
-                    line,
-                    format!(
-                        "header must be 'nu,p2,p3', found '{}'",
-                        escape_text(&fields.join(","))
-                    ),
-                ));
-            }
-            header_seen = true;
-            continue;
-        }
-        if text.trim().is_empty() {
-            return Err(bad(
-                line,
-                "line holds only whitespace; a blank line must be empty to be skipped".into(),
-            ));
-        }
-        if fields.len() != 3 {
-            return Err(bad(
-                line,
-                format!(
-                    "expected 3 fields (nu,p2,p3), found {}: '{}'",
-                    fields.len(),
-                    escape_text(text)
-                ),
-            ));
-        }
-        let mut v = [0.0; 3];
-        for (j, name) in HEADER.iter().enumerate() {
-            let s = fields[j].as_str();
-            if s.is_empty() {
-                return Err(bad(line, format!("{name} is empty")));
-            }
-            let x = s.parse::<f64>().map_err(|_| {
-                bad(
-                    line,
-                    format!("{name} = '{}' is not a number", escape_text(s)),
-                )
+    for r in table.rows {
+        let groups =
+            Groups::new(r.values[0], r.values[1], r.values[2]).map_err(|e| Error::Csv {
+                file: file.to_string(),
+                line: r.line,
+                message: e.to_string(),
             })?;
-            if !x.is_finite() {
-                return Err(bad(
-                    line,
-                    format!("{name} = '{}' is not a finite number", escape_text(s)),
-                ));
-            }
-            v[j] = x;
-        }
-        let groups = Groups::new(v[0], v[1], v[2]).map_err(|e| bad(line, e.to_string()))?;
-        let [a, b, c]: [String; 3] = fields.try_into().unwrap_or_default();
+        let [a, b, c]: [String; 3] = r.fields.try_into().unwrap_or_default();
         out.rows.push(Row {
-            line,
+            line: r.line,
             text: [a, b, c],
             groups,
         });
-    }
-    if !header_seen {
-        return Err(bad(
-            1,
-            "no header: expected 'nu,p2,p3' (the file is empty)".into(),
-        ));
     }
     Ok(out)
 }
@@ -163,93 +93,6 @@ pub fn format_line_list(lines: &[u64]) -> String {
         i = j + 1;
     }
     parts.join(", ")
-}
-
-/// The physical lines of `bytes` with their 1-based numbers, terminators removed. A line ends at
-/// `\r\n`, `\n` or a lone `\r`; text after the last terminator, if any, is the last line.
-pub(crate) fn physical_lines(bytes: &[u8]) -> Vec<(u64, &[u8])> {
-    let mut lines = Vec::new();
-    let mut start = 0;
-    let mut i = 0;
-    while i < bytes.len() {
-        match bytes[i] {
-            b'\n' => {
-                lines.push(&bytes[start..i]);
-                start = i + 1;
-            }
-            b'\r' => {
-                lines.push(&bytes[start..i]);
-                if bytes.get(i + 1) == Some(&b'\n') {
-                    i += 1;
-                }
-                start = i + 1;
-            }
-            _ => {}
-        }
-        i += 1;
-    }
-    if start < bytes.len() {
-        lines.push(&bytes[start..]);
-    }
-    (1..).zip(lines).collect()
-}
-
-/// Split one line into comma-separated fields, each trimmed; a field may be quoted (`"..."`,
-/// with `""` for a quote inside) and then may hold commas. An unterminated quote is an error:
-/// a quoted field cannot span lines.
-pub(crate) fn split_fields(line: &str) -> std::result::Result<Vec<String>, String> {
-    let mut fields = Vec::new();
-    let mut rest = line;
-    loop {
-        let t = rest.trim_start();
-        if let Some(q) = t.strip_prefix('"') {
-            let mut value = String::new();
-            let mut end = None;
-            let mut chars = q.char_indices().peekable();
-            while let Some((i, c)) = chars.next() {
-                if c != '"' {
-                    value.push(c);
-                } else if chars.peek().map(|&(_, n)| n) == Some('"') {
-                    value.push('"');
-                    chars.next();
-                } else {
-                    end = Some(i + 1);
-                    break;
-                }
-            }
-            let Some(end) = end else {
-                return Err(
-                    "unterminated quoted field (a quoted field cannot span lines)".to_string(),
-                );
-            };
-            fields.push(value.trim().to_string());
-            let after = q[end..].trim_start();
-            if after.is_empty() {
-                break;
-            }
-            match after.strip_prefix(',') {
-                Some(r) => rest = r,
-                None => {
-                    return Err(format!(
-                        "unexpected text '{}' after a quoted field",
-                        escape_text(after)
-                    ))
-                }
-            }
-        } else {
-            match t.find(',') {
-                Some(i) => {
-                    fields.push(t[..i].trim().to_string());
-                    rest = &t[i + 1..];
-                }
-                None => {
-                    fields.push(t.trim().to_string());
-                    break;
-                }
-            }
-        }
-    }
-    Ok(fields)
 }
 
 /// Solve every row in parallel (rayon); the first failing row (in input order) is the error.

@@ -25,6 +25,7 @@ pub mod fast;
 pub mod figures;
 pub mod impact;
 pub mod indentation;
+pub mod lines;
 pub mod material;
 pub mod mdr;
 pub mod output;

@@ -771,6 +771,19 @@ pub fn external_comparison(
     ])
 }
 
+/// The empty table of [`external_comparison`] rows.
+fn external_table() -> Table {
+    Table::new(&[
+        "solver",
+        "rows",
+        "CoR error max / mean",
+        "contact time error max / mean",
+        "max indentation error max / mean",
+        "CoR within rtol",
+        "refused",
+    ])
+}
+
 /// Options of a validation run.
 #[derive(Debug, Clone)]
 pub struct ValidateOptions {
@@ -810,15 +823,7 @@ pub fn run(opts: &ValidateOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
         "\n## 1b. Against the external reference table (computed outside the project)\n\n",
     );
     w(&mut md, EXTERNAL_TEXT);
-    let mut t = Table::new(&[
-        "solver",
-        "rows",
-        "CoR error max / mean",
-        "contact time error max / mean",
-        "max indentation error max / mean",
-        "CoR within rtol",
-        "refused",
-    ]);
+    let mut t = external_table();
     let rows = external_rows()?;
     for s in external_settings() {
         t.rows.push(external_comparison(&s, &rows, tick)?);
@@ -826,15 +831,7 @@ pub fn run(opts: &ValidateOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
     w(&mut md, &t.markdown());
     w(&mut md, GLASSY_TEXT);
     let glassy = external_glassy_rows()?;
-    let mut t = Table::new(&[
-        "solver",
-        "rows",
-        "CoR error max / mean",
-        "contact time error max / mean",
-        "max indentation error max / mean",
-        "CoR within rtol",
-        "refused",
-    ]);
+    let mut t = external_table();
     for s in glassy_settings() {
         t.rows.push(external_comparison(&s, &glassy, &|| {})?);
     }

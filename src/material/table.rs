@@ -11,13 +11,13 @@
 //!
 //! SI units (s, Pa). The relaxed modulus is not part of the table; a scene gives it beside the
 //! file (`g_inf` or `k_inf`). Lines and fields follow the rules of the `cor --input` reader
-//! ([`crate::batch::parse_rows`]): UTF-8 with an optional byte-order mark, `\n`, `\r\n` or `\r`
+//! ([`crate::lines`]): UTF-8 with an optional byte-order mark, `\n`, `\r\n` or `\r`
 //! line ends, trimmed and optionally quoted fields; empty lines are skipped here.
 
 use std::path::Path;
 
-use crate::batch::{physical_lines, split_fields};
-use crate::error::{escape_text, Error, Result};
+use crate::error::{Error, Result};
+use crate::lines::parse_numeric;
 
 /// The header of a Prony table file.
 pub const PRONY_HEADER: [&str; 2] = ["tau", "modulus"];
@@ -47,74 +47,23 @@ pub fn parse_prony_table(file: &str, bytes: &[u8]) -> Result<Vec<(f64, f64)>> {
         line,
         message,
     };
-    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
-    let mut header_seen = false;
-    let mut out = Vec::new();
-    for (line, raw) in physical_lines(bytes) {
-        if raw.is_empty() {
-            continue;
-        }
-        let text = std::str::from_utf8(raw).map_err(|e| {
-            bad(
-                line,
-                format!("not valid UTF-8 (byte {} of the line)", e.valid_up_to() + 1),
-            )
-        })?;
-        let fields = split_fields(text).map_err(|m| bad(line, m))?;
-        if !header_seen {
-            if fields != PRONY_HEADER {
-                return Err(bad(
-                    line,
-                    format!(
-                        "header must be 'tau,modulus' (s, Pa), found '{}'",
-                        escape_text(&fields.join(","))
-                    ),
-                ));
-            }
-            header_seen = true;
-            continue;
-        }
-        if fields.len() != 2 {
+    let table = parse_numeric(file, bytes, &PRONY_HEADER)?;
+    let mut out = Vec::with_capacity(table.rows.len());
+    for r in &table.rows {
+        let (tau, modulus) = (r.values[0], r.values[1]);
+        if !(tau > 0.0) {
             return Err(bad(
-                line,
-                format!(
-                    "expected 2 fields (tau,modulus), found {}: '{}'",
-                    fields.len(),
-                    escape_text(text)
-                ),
-            ));
-        }
-        let mut v = [0.0; 2];
-        for (j, name) in PRONY_HEADER.iter().enumerate() {
-            let s = fields[j].as_str();
-            let x = s.parse::<f64>().map_err(|_| {
-                bad(
-                    line,
-                    format!("{name} = '{}' is not a number", escape_text(s)),
-                )
-            })?;
-            v[j] = x;
-        }
-        let [tau, modulus] = v;
-        if !(tau.is_finite() && tau > 0.0) {
-            return Err(bad(
-                line,
+                r.line,
                 format!("tau = {tau:e} is out of range: allowed 0 < tau < inf (s)"),
             ));
         }
-        if !(modulus.is_finite() && modulus >= 0.0) {
+        if !(modulus >= 0.0) {
             return Err(bad(
-                line,
+                r.line,
                 format!("modulus = {modulus:e} is out of range: allowed 0 <= modulus < inf (Pa)"),
             ));
         }
         out.push((modulus, tau));
-    }
-    if !header_seen {
-        return Err(bad(
-            1,
-            "no header: expected 'tau,modulus' (the file is empty)".into(),
-        ));
     }
     if out.is_empty() {
         return Err(bad(1, "no rows after the header 'tau,modulus'".into()));
