@@ -192,6 +192,34 @@ pub(super) fn seg_poly_at<const K: usize>(seg: &Seg<K>, th: f64) -> (f64, f64, f
     (seg.dn + th * (seg.vh + th * d), seg.vh + th * v, a)
 }
 
+/// Newton start of a step: the unknowns `z_i = D_i - dfix_i` at the nodes `t0 + c_i h`,
+/// extrapolated from the previous step's polynomial `pred`, or without one from the force `f_n`
+/// at the step start (`D = dfix - h^2 A F` with `F` constant).
+pub(super) fn predict_nodes<const K: usize>(
+    b: &Basis,
+    c: &[f64; S],
+    t0: f64,
+    h: f64,
+    dfix: &[f64; S],
+    f_n: f64,
+    pred: Option<&Seg<K>>,
+) -> [f64; S] {
+    let h2 = h * h;
+    let mut z = [0.0; S];
+    for i in 0..S {
+        let mut a1 = 0.0;
+        for j in 0..S {
+            a1 += b.a[i][j];
+        }
+        z[i] = match pred {
+            // extrapolate the previous step's polynomial to the new nodes
+            Some(p) => seg_d(p, (t0 + c[i] * h - p.t0) / p.h) - dfix[i],
+            None => -h2 * a1 * f_n,
+        };
+    }
+    z
+}
+
 /// `d` of a step's polynomial at `θ` (see [`seg_poly`]).
 pub(super) fn seg_d<const K: usize>(seg: &Seg<K>, th: f64) -> f64 {
     seg_poly_at(seg, th).0

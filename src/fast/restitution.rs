@@ -364,18 +364,7 @@ impl<const K: usize> Solver<K> {
             si
         };
         let h2 = h * h;
-        let mut z = [0.0; S];
-        for i in 0..S {
-            let mut a1 = 0.0;
-            for j in 0..S {
-                a1 += b.a[i][j];
-            }
-            z[i] = match pred {
-                // extrapolate the previous step's polynomial to the new nodes
-                Some(p) => seg_d(p, (t0 + c[i] * h - p.t0) / p.h) - dfix[i],
-                None => -h2 * a1 * f_n,
-            };
-        }
+        let mut z = predict_nodes(b, &c, t0, h, &dfix, f_n, pred);
         let mut t1 = *t1_guess;
         let mut f = [0.0; S];
         let mut d1 = [0.0; S];
