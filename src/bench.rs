@@ -242,6 +242,7 @@ pub fn summary(
     machine: &str,
     batch: Option<(usize, f64)>,
     timed: &[(TimedRows, Vec<RowTiming>)],
+    general: &[GeneralTiming],
 ) -> String {
     let mut s = String::new();
     let _ = writeln!(
@@ -289,6 +290,19 @@ pub fn summary(
     for (kind, rows) in timed {
         let _ = writeln!(s, "\n{}\n", kind.intro(rows.len()));
         s.push_str(&timing_table(rows, *kind));
+    }
+    if !general.is_empty() {
+        let random = timed
+            .iter()
+            .find(|(k, _)| *k == TimedRows::Random)
+            .map(|(_, r)| r.as_slice());
+        let _ = writeln!(
+            s,
+            "\n`fast` at rtol 1e-6 on the general materials of VALIDATION.md section 1c (one core, \
+             CoR only), each beside the standard solid of the random sample in the same CoR group; \
+             the ratio is of the median times:\n"
+        );
+        s.push_str(&general_timing_table(general, random));
     }
     if let Some((rows, secs)) = batch {
         let _ = writeln!(
@@ -839,6 +853,52 @@ mod tests {
         assert!(!table.contains("NaN"), "{table}");
     }
 
+    #[test]
+    fn general_timing_table_compares_within_the_cor_group() {
+        let random = [
+            timing(0.95, [10, 40], [60, 300]),
+            timing(0.5, [30, 90], [200, 700]),
+            timing(0.4, [20, 70], [100, 500]),
+        ];
+        let general = [
+            GeneralTiming {
+                id: "g-elastic",
+                terms: 30,
+                cor: 0.97,
+                seconds: 3e-5,
+                steps: 40,
+                evaluations: 250,
+            },
+            GeneralTiming {
+                id: "g-dissipative",
+                terms: 62,
+                cor: 0.6,
+                seconds: 2e-5,
+                steps: 35,
+                evaluations: 200,
+            },
+        ];
+        let table = general_timing_table(&general, Some(&random));
+        // the nearly elastic group has one row (1e-5 s): ratio 3; the dissipative one two rows,
+        // median the upper one (1e-5 s), mean work 25.0 / 150: ratio 2
+        let e = line_of(&table, "| g-elastic | 30 |");
+        assert!(
+            e.contains("nearly elastic (e >= 0.9)") && e.ends_with("| 3.0 |"),
+            "{table}"
+        );
+        let d = line_of(&table, "| g-dissipative | 62 |");
+        assert!(
+            d.contains("25.0 / 150") && d.ends_with("| 2.0 |"),
+            "{table}"
+        );
+        // without the random sample: dashes
+        let table = general_timing_table(&general, None);
+        assert!(
+            line_of(&table, "| g-elastic").ends_with("| - | - |"),
+            "{table}"
+        );
+    }
+
     fn line_of(table: &str, prefix: &str) -> String {
         table
             .lines()
@@ -937,4 +997,105 @@ mod tests {
         assert_eq!(col("evaluations_rtol_1e-10"), "310");
         assert_eq!(col("cor_reference").parse::<f64>().unwrap(), 0.5);
     }
+}
+
+/// Time of `fast` at rtol 1e-6 on one general-material case ([`crate::catalogue::GENERAL`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct GeneralTiming {
+    /// Case id.
+    pub id: &'static str,
+    /// Terms of its `G_eq`.
+    pub terms: usize,
+    /// Its CoR.
+    pub cor: f64,
+    /// Median wall time per impact (s).
+    pub seconds: f64,
+    /// Attempted steps of one solve.
+    pub steps: u64,
+    /// Force and history evaluations of one solve.
+    pub evaluations: u64,
+}
+
+/// Time `fast` (CoR only, one core, rtol 1e-6) on every general-material case: the median over
+/// repeats within `budget` seconds per case.
+pub fn general_timing(budget: f64) -> Result<Vec<GeneralTiming>> {
+    crate::catalogue::GENERAL
+        .iter()
+        .map(|case| {
+            let imp = case.impact()?;
+            let opts = SolveOptions {
+                solver: SolverKind::Fast,
+                rtol: TIMING_RTOLS[0],
+                ..Default::default()
+            };
+            let out = solve(&imp, &opts)?;
+            let (seconds, _) = median_time(budget, || solve(&imp, &opts).map(|_| ()))?;
+            Ok(GeneralTiming {
+                id: case.id,
+                terms: imp.canonical_relaxation().terms.len(),
+                cor: out.cor,
+                seconds,
+                steps: out.work.steps,
+                evaluations: out.work.evaluations,
+            })
+        })
+        .collect()
+}
+
+/// Markdown table of [`general_timing`], each case beside the standard solid of the random
+/// sample in the same CoR group (`random`: the rows of [`TimedRows::Random`], if timed), with
+/// the ratio of the median times.
+pub fn general_timing_table(rows: &[GeneralTiming], random: Option<&[RowTiming]>) -> String {
+    let mut s = String::from(
+        "| case | G_eq terms | CoR | median time | steps / evaluations | standard solid, same CoR group (random rows): median time, steps / evaluations | ratio |\n\
+         | --- | --- | --- | --- | --- | --- | --- |\n",
+    );
+    let groups = timing_groups();
+    for r in rows {
+        let probe = crate::validate::ExternalRow {
+            nu: 0.0,
+            p2: 1.0,
+            p3: 1.0,
+            cor: r.cor,
+            contact_time: 0.0,
+            max_indentation: 0.0,
+            est_rel_err: 0.0,
+        };
+        // the CoR group (the first groups after "all rows" split by CoR only)
+        let same = groups
+            .iter()
+            .skip(1)
+            .take(3)
+            .find(|(_, member)| member(&probe))
+            .and_then(|(name, member)| {
+                let sel: Vec<&RowTiming> = random?.iter().filter(|t| member(&t.row)).collect();
+                if sel.is_empty() {
+                    return None;
+                }
+                let mut v: Vec<f64> = sel.iter().map(|t| t.seconds[0]).collect();
+                v.sort_by(|a, b| a.total_cmp(b));
+                let n = sel.len() as f64;
+                let steps = sel.iter().map(|t| t.steps[0] as f64).sum::<f64>() / n;
+                let evals = sel.iter().map(|t| t.evaluations[0] as f64).sum::<f64>() / n;
+                Some((*name, v[v.len() / 2], steps, evals))
+            });
+        let (std_text, ratio) = match same {
+            Some((name, t, steps, evals)) => (
+                format!("{name}: {}, {steps:.1} / {evals:.0}", fmt_time(t)),
+                format!("{:.1}", r.seconds / t),
+            ),
+            None => ("-".to_string(), "-".to_string()),
+        };
+        let _ = writeln!(
+            s,
+            "| {} | {} | {:.4} | {} | {} / {} | {std_text} | {ratio} |",
+            r.id,
+            r.terms,
+            r.cor,
+            fmt_time(r.seconds),
+            r.steps,
+            r.evaluations
+        );
+    }
+    s
 }

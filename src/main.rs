@@ -444,6 +444,17 @@ fn run(cli: Cli) -> Result<(), Error> {
                 println!("{}", bench::timing_table(&t, kind));
                 timed.push((kind, t));
             }
+            let general = if quick {
+                Vec::new()
+            } else {
+                let g = bench::general_timing(budget)?;
+                let random = timed
+                    .iter()
+                    .find(|(k, _)| *k == bench::TimedRows::Random)
+                    .map(|(_, r)| r.as_slice());
+                println!("{}", bench::general_timing_table(&g, random));
+                g
+            };
             let batch = if batch_rows > 0 {
                 let rows = batch::random_rows(batch_rows, 1)?;
                 let t0 = std::time::Instant::now();
@@ -460,7 +471,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             if !quick {
                 let existing =
                     std::fs::read_to_string(&report).map_err(|e| Error::io(&report, e))?;
-                let section = bench::summary(&points, &bench::machine(), batch, &timed);
+                let section = bench::summary(&points, &bench::machine(), batch, &timed, &general);
                 let text = validate::replace_performance(&existing, &section)?;
                 output::write_atomic(&report, |w| {
                     w.write_all(text.as_bytes())
