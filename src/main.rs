@@ -34,6 +34,22 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// CoR against impact velocity: the scene's impact (the embedded default when none is
+    /// given) at N velocities; writes DIR/curve.csv and DIR/curve.svg.
+    Curve {
+        /// Scene file (TOML); its sphere, material and solver are used, its velocity and
+        /// [output] are not.
+        scene: Option<PathBuf>,
+        /// Velocities MIN:MAX:N in m/s (0 < MIN < MAX, 2 <= N <= 100000).
+        #[arg(long, allow_hyphen_values = true)]
+        v0: String,
+        /// Log-spaced velocities (and a log velocity axis) instead of linear.
+        #[arg(long)]
+        log: bool,
+        /// Output folder.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+    },
     /// Coefficient of restitution from the dimensionless groups (Eq. 11).
     Cor {
         /// Static Poisson ratio, -1 < nu <= 0.5 (0.5 = incompressible).
@@ -264,6 +280,30 @@ fn run(cli: Cli) -> Result<(), Error> {
                     note("force plot written to", p.display().to_string());
                 }
             }
+            Ok(())
+        }
+        Command::Curve {
+            scene,
+            v0,
+            log,
+            out,
+        } => {
+            use mdr_impact::curve;
+            // the input is checked before the scene is read or anything solved
+            let range = curve::VelocityRange::parse(&v0, log)?;
+            if out.as_os_str().is_empty() {
+                return Err(Error::EmptyPath { field: "--out" });
+            }
+            let scene = match scene {
+                Some(p) => Scene::load(&p)?,
+                None => Scene::default_scene(),
+            };
+            let bar = progress_bar(range.n as u64, "curve");
+            let c = curve::run(&scene.impact, &scene.options, &range, &|| bar.inc(1));
+            bar.finish_and_clear();
+            let c = c?;
+            let written = curve::write_outputs(&out, &c, log)?;
+            print!("{}", curve::summary(&c, Some(&written)));
             Ok(())
         }
         Command::Cor {
