@@ -494,6 +494,16 @@ fn run(cli: Cli) -> Result<(), Error> {
             } else {
                 None
             };
+            {
+                // curve over 200 velocities of the default scene (not part of the report)
+                use mdr_impact::curve;
+                let scene = Scene::default_scene();
+                let range = curve::VelocityRange::parse("0.01:10:200", true)?;
+                let t0 = std::time::Instant::now();
+                curve::run(&scene.impact, &scene.options, &range, &|| {})?;
+                let secs = t0.elapsed().as_secs_f64();
+                println!("curve --v0 0.01:10:200 --log (default scene): {secs:.3} s");
+            }
             if !timed.is_empty() {
                 print!("{}", bench::targets(&timed, bench::speedup(&points), batch));
             }
