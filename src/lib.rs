@@ -20,6 +20,7 @@
 pub mod batch;
 pub mod bench;
 pub mod catalogue;
+pub mod curve;
 pub mod error;
 pub mod fast;
 pub mod figures;

@@ -34,6 +34,22 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// CoR against impact velocity: the scene's impact (the embedded default when none is
+    /// given) at N velocities; writes DIR/curve.csv and DIR/curve.svg.
+    Curve {
+        /// Scene file (TOML); its sphere, material and solver are used, its velocity and
+        /// [output] are not.
+        scene: Option<PathBuf>,
+        /// Velocities MIN:MAX:N in m/s (0 < MIN < MAX, 2 <= N <= 100000).
+        #[arg(long, allow_hyphen_values = true)]
+        v0: String,
+        /// Log-spaced velocities (and a log velocity axis) instead of linear.
+        #[arg(long)]
+        log: bool,
+        /// Output folder.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+    },
     /// Coefficient of restitution from the dimensionless groups (Eq. 11).
     Cor {
         /// Static Poisson ratio, -1 < nu <= 0.5 (0.5 = incompressible).
@@ -266,6 +282,30 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             Ok(())
         }
+        Command::Curve {
+            scene,
+            v0,
+            log,
+            out,
+        } => {
+            use mdr_impact::curve;
+            // the input is checked before the scene is read or anything solved
+            let range = curve::VelocityRange::parse(&v0, log)?;
+            if out.as_os_str().is_empty() {
+                return Err(Error::EmptyPath { field: "--out" });
+            }
+            let scene = match scene {
+                Some(p) => Scene::load(&p)?,
+                None => Scene::default_scene(),
+            };
+            let bar = progress_bar(range.n as u64, "curve");
+            let c = curve::run(&scene.impact, &scene.options, &range, &|| bar.inc(1));
+            bar.finish_and_clear();
+            let c = c?;
+            let written = curve::write_outputs(&out, &c, log)?;
+            print!("{}", curve::summary(&c, Some(&written)));
+            Ok(())
+        }
         Command::Cor {
             nu,
             p2,
@@ -465,6 +505,16 @@ fn run(cli: Cli) -> Result<(), Error> {
             } else {
                 None
             };
+            {
+                // curve over 200 velocities of the default scene (not part of the report)
+                use mdr_impact::curve;
+                let scene = Scene::default_scene();
+                let range = curve::VelocityRange::parse("0.01:10:200", true)?;
+                let t0 = std::time::Instant::now();
+                curve::run(&scene.impact, &scene.options, &range, &|| {})?;
+                let secs = t0.elapsed().as_secs_f64();
+                println!("curve --v0 0.01:10:200 --log (default scene): {secs:.3} s");
+            }
             if !timed.is_empty() {
                 print!("{}", bench::targets(&timed, bench::speedup(&points), batch));
             }

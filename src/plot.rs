@@ -97,3 +97,126 @@ pub fn line_chart_svg(
         w.write_all(svg.as_bytes()).map_err(|e| Error::io(path, e))
     })
 }
+
+/// The SVG text of a CoR-against-velocity curve ([`crate::curve`]): `e(v0)` on a linear or (with
+/// `log`) logarithmic velocity axis, `e` from 0 to 1 (with a little headroom so that the line
+/// `e = 1` stays visible), the elastic limits `e = 1` as a horizontal line and, where they fall
+/// inside the velocity range, vertical markers at the `p3 = 1` velocity and at the velocities
+/// where the Hertz contact time meets the slowest / fastest relaxation time. Rendered in memory
+/// only; `path` names the file in errors (the caller writes it, atomically).
+pub fn cor_curve_svg(path: &Path, curve: &crate::curve::Curve, log: bool) -> Result<String> {
+    type Chart<'a, 'b, X> =
+        ChartContext<'a, SVGBackend<'b>, Cartesian2d<X, plotters::coord::types::RangedCoordf64>>;
+    fn draw<'a, 'b: 'a, X>(
+        path: &Path,
+        chart: &mut Chart<'a, 'b, X>,
+        curve: &crate::curve::Curve,
+        y1: f64,
+    ) -> Result<()>
+    where
+        X: Ranged<ValueType = f64> + plotters::coord::ranged1d::ValueFormatter<f64>,
+    {
+        let e = |e: &dyn std::fmt::Display| Error::io(path, e);
+        chart
+            .configure_mesh()
+            .x_desc("impact velocity v0 (m/s)")
+            .y_desc("coefficient of restitution e")
+            .draw()
+            .map_err(|x| e(&x))?;
+        let (x0, x1) = (curve.rows[0].v0, curve.rows[curve.rows.len() - 1].v0);
+        let limit = RGBColor(120, 120, 120);
+        chart
+            .draw_series(LineSeries::new(
+                [(x0, 1.0), (x1, 1.0)],
+                limit.stroke_width(2),
+            ))
+            .map_err(|x| e(&x))?
+            .label("elastic limits (relaxed v0 -> 0, glassy v0 -> inf)")
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 18, y)], limit.stroke_width(2))
+            });
+        let l = &curve.limits;
+        let markers = [
+            (l.p3_unit_velocity, "p3 = 1", RGBColor(200, 30, 30)),
+            (
+                l.relaxed_crossover,
+                "Hertz contact time (relaxed) = slowest tau",
+                RGBColor(30, 140, 60),
+            ),
+            (
+                l.glassy_crossover,
+                "Hertz contact time (glassy) = fastest tau",
+                RGBColor(150, 60, 170),
+            ),
+        ];
+        for (v, name, color) in markers {
+            let Some(v) = v.filter(|v| *v >= x0 && *v <= x1) else {
+                continue;
+            };
+            chart
+                .draw_series(LineSeries::new([(v, 0.0), (v, y1)], color.stroke_width(1)))
+                .map_err(|x| e(&x))?
+                .label(format!("{name} (v0 = {v:.3e} m/s)"))
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(1))
+                });
+        }
+        let blue = RGBColor(30, 80, 200);
+        chart
+            .draw_series(LineSeries::new(
+                curve.rows.iter().map(|r| (r.v0, r.cor)),
+                blue.stroke_width(2),
+            ))
+            .map_err(|x| e(&x))?
+            .label("e(v0)")
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 18, y)], blue.stroke_width(2))
+            });
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::LowerLeft)
+            .border_style(BLACK)
+            .background_style(WHITE.mix(0.85))
+            .draw()
+            .map_err(|x| e(&x))?;
+        Ok(())
+    }
+
+    let n = curve.rows.len();
+    if n < 2 || !(curve.rows[0].v0 < curve.rows[n - 1].v0) {
+        return Err(Error::Unsupported(format!(
+            "{}: a curve needs at least two velocities",
+            path.display()
+        )));
+    }
+    let (x0, x1) = (curve.rows[0].v0, curve.rows[n - 1].v0);
+    let y1 = 1.05;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (900, 560)).into_drawing_area();
+        let e = |e: &dyn std::fmt::Display| Error::io(path, e);
+        root.fill(&WHITE).map_err(|x| e(&x))?;
+        let mut builder = ChartBuilder::on(&root);
+        builder
+            .caption(
+                "Coefficient of restitution against impact velocity",
+                ("sans-serif", 22),
+            )
+            .margin(12)
+            .x_label_area_size(44)
+            .y_label_area_size(70);
+        if log {
+            let mut chart = builder
+                .build_cartesian_2d((x0..x1).log_scale(), 0.0..y1)
+                .map_err(|x| e(&x))?;
+            draw(path, &mut chart, curve, y1)?;
+        } else {
+            let mut chart = builder
+                .build_cartesian_2d(x0..x1, 0.0..y1)
+                .map_err(|x| e(&x))?;
+            draw(path, &mut chart, curve, y1)?;
+        }
+        root.present().map_err(|x| e(&x))?;
+    }
+    Ok(svg)
+}
