@@ -309,43 +309,37 @@ mod tests {
     use crate::material::rheology::{BulkProny, ShearProny};
     use crate::material::{ElementNetwork, Material};
 
-    /// Response `force / (4 dx)` to `u = H(t)` at `times` (sorted, `> 0`): a linear ramp over
-    /// `eps` then geometric steps of ratio `rho` (`times` on the grid), Richardson-extrapolated
-    /// from `rho` and `sqrt(rho)` (second order in `ln rho`).
-    fn step_response(net: &GeneralNetwork, times: &[f64], eps: f64, n_per: usize) -> Vec<f64> {
-        let run = |n_per: usize| -> Vec<f64> {
+    /// Response `force / (4 dx)` to `u = H(t)`: a linear ramp over `eps`, then the geometric
+    /// grid `t_k = eps exp(k / n_per)`, sampled at the grid points `k` of `samples`, and
+    /// Richardson-extrapolated from `n_per` and `2 n_per` (nested grids; the leading error is second order in
+    /// `1 / n_per`). Returns `(t, response)` pairs.
+    fn step_response(
+        net: &GeneralNetwork,
+        samples: &[usize],
+        eps: f64,
+        n_per: usize,
+    ) -> Vec<(f64, f64)> {
+        let run = |n_per: usize, stride: usize| -> Vec<f64> {
             let mut state = vec![0.0; net.state_len()];
-            let f = net.factors(eps);
-            net.advance(&f, 0.0, 1.0, &mut state);
-            let mut t = eps;
-            let mut out = Vec::with_capacity(times.len());
-            let mut cache: Option<StepFactors> = None;
-            for &target in times {
-                let ln = (target / t).ln();
-                let steps = ((ln * n_per as f64).ceil() as usize).max(1);
-                let ratio = (ln / steps as f64).exp();
-                for k in 0..steps {
-                    let t1 = if k + 1 == steps { target } else { t * ratio };
-                    let dt = t1 - t;
-                    let fresh = match &cache {
-                        Some(c) => c.dt != dt,
-                        None => true,
-                    };
-                    if fresh {
-                        cache = Some(net.factors(dt));
-                    }
-                    net.advance(cache.as_ref().unwrap(), 1.0, 0.0, &mut state);
-                    t = t1;
+            net.advance(&net.factors(eps), 0.0, 1.0, &mut state);
+            let time = |k: usize| eps * (k as f64 / n_per as f64).exp();
+            let mut k = 0;
+            let mut out = Vec::with_capacity(samples.len());
+            for &target in samples {
+                while k < target * stride {
+                    let dt = time(k + 1) - time(k);
+                    net.advance(&net.factors(dt), 1.0, 0.0, &mut state);
+                    k += 1;
                 }
                 out.push(net.force(&state));
             }
             out
         };
-        let (coarse, fine) = (run(n_per), run(2 * n_per));
-        coarse
+        let (coarse, fine) = (run(n_per, 1), run(2 * n_per, 2));
+        samples
             .iter()
-            .zip(&fine)
-            .map(|(c, f)| (4.0 * f - c) / 3.0)
+            .zip(coarse.iter().zip(&fine))
+            .map(|(&k, (c, f))| (eps * (k as f64 / n_per as f64).exp(), (4.0 * f - c) / 3.0))
             .collect()
     }
 
@@ -354,13 +348,16 @@ mod tests {
         let g_eq = m.equivalent_relaxation().unwrap();
         let t_min = net.min_time();
         let t_max = g_eq.terms.iter().map(|p| p.tau).fold(t_min, f64::max);
-        let times: Vec<f64> = (0..=80)
-            .map(|i| t_min * 1e-3 * (t_max / t_min * 1e6).powf(i as f64 / 80.0))
-            .collect();
-        let got = step_response(&net, &times, 1e-13 * t_min, 20_000);
+        let (eps, n_per) = (1e-13 * t_min, 16_000);
+        // 81 samples from t_min / 1000 to 1000 t_max, on the grid
+        let (k0, k1) = (
+            ((t_min * 1e-3 / eps).ln() * n_per as f64) as usize,
+            ((t_max * 1e3 / eps).ln() * n_per as f64) as usize,
+        );
+        let samples: Vec<usize> = (0..=80).map(|i| k0 + (k1 - k0) * i / 80).collect();
         let mut worst: f64 = 0.0;
-        for (t, f) in times.iter().zip(&got) {
-            let want = g_eq.eval(*t);
+        for (t, f) in step_response(&net, &samples, eps, n_per) {
+            let want = g_eq.eval(t);
             let err = (f - want).abs() / want;
             worst = worst.max(err);
             assert!(
@@ -383,7 +380,10 @@ mod tests {
 
     /// The network's relaxation (force per `4 dx` under `u = H(t)`) is `G_eq(t)` from the Carson
     /// composition, for long series over many decades, elastic and viscoelastic bulk and
-    /// incompressible.
+    /// incompressible. The step error is second order where `u2` is smooth on the step, first
+    /// order (with a coefficient `tau / dt` small) where a fast Maxwell term is quasi-static, so
+    /// the extrapolation is not exact: measured (2026-11-25) within 6e-11 at 16000 steps per
+    /// e-fold, 1.5e-10 at 8000.
     #[test]
     fn relaxes_like_g_eq() {
         let bulks = [
@@ -394,15 +394,25 @@ mod tests {
                 BulkProny::new(2.0, &[(50.0, 3e-3), (5.0, 0.7), (20.0, 40.0)]).unwrap(),
             ),
         ];
-        let mut worst: f64 = 0.0;
-        for (n, decades) in [(1, 0.0), (3, 4.0), (10, 12.0), (30, 20.0)] {
-            for b in &bulks {
-                let m = GeneralMaterial::new(shear(n, decades), b.clone()).unwrap();
-                let w = check_against_g_eq(&m, 1e-10);
-                eprintln!("{n} shear terms, {b:?}: network vs G_eq within {w:e}");
-                worst = worst.max(w);
-            }
-        }
+        // the cases run in parallel (the 30-term series over 20 decades dominate)
+        let worst = std::thread::scope(|scope| {
+            let handles: Vec<_> = [(1, 0.0), (3, 4.0), (10, 12.0), (30, 20.0)]
+                .into_iter()
+                .flat_map(|(n, decades)| bulks.iter().map(move |b| (n, decades, b)))
+                .map(|(n, decades, b)| {
+                    scope.spawn(move || {
+                        let m = GeneralMaterial::new(shear(n, decades), b.clone()).unwrap();
+                        let w = check_against_g_eq(&m, 1e-10);
+                        eprintln!("{n} shear terms, {b:?}: network vs G_eq within {w:e}");
+                        w
+                    })
+                })
+                .collect();
+            handles
+                .into_iter()
+                .map(|h| h.join().unwrap())
+                .fold(0.0, f64::max)
+        });
         eprintln!("network vs G_eq: worst relative difference {worst:e}");
     }
 
