@@ -311,8 +311,8 @@ mod tests {
 
     /// Response `force / (4 dx)` to `u = H(t)`: a linear ramp over `eps`, then the geometric
     /// grid `t_k = eps exp(k / n_per)`, sampled at the grid points `k` of `samples`, and
-    /// Richardson-extrapolated from `n_per` and `2 n_per` (nested grids; the leading error is second order in
-    /// `1 / n_per`). Returns `(t, response)` pairs.
+    /// Richardson-extrapolated from `n_per` and `2 n_per` (nested grids; the leading error is
+    /// second order in `1 / n_per`). Returns `(t, response)` pairs.
     fn step_response(
         net: &GeneralNetwork,
         samples: &[usize],
