@@ -8,9 +8,11 @@
 //! force would turn negative (outermost first: last in, first out) and are never traced again.
 //! The sphere obeys `m d'' = -F` (Eq. 9).
 //!
-//! Two time schemes: [`Scheme::Euler`] (the paper's explicit Euler on the network of Eq. 8) and
-//! [`Scheme::Exponential`] (exact exponential update of the Prony internal variables, trapezoidal
-//! rule for the sphere: unconditionally stable, second order). Both work in canonical units
+//! Two time schemes: [`Scheme::Euler`] (the paper's explicit Euler on the network of Eq. 8,
+//! standard solid only) and [`Scheme::Exponential`] (exact exponential update of the Prony
+//! internal variables, trapezoidal rule for the sphere: unconditionally stable, second order),
+//! on the standard solid's `G_eq` or on a general material's element network built from `G` and
+//! `K` ([`crate::material::GeneralNetwork`], module `network`). Both work in canonical units
 //! (`m = R = v0 = G_inf = 1`, see [`crate::impact`]); [`indent`] drives the foundation with a
 //! prescribed indentation instead.
 
