@@ -3,8 +3,8 @@
 
 use crate::error::{Error, Result};
 use crate::fast;
-use crate::impact::{Impact, Outcome};
-use crate::material::ElementNetwork;
+use crate::impact::{Impact, ImpactMaterial, Outcome};
+use crate::material::{ElementNetwork, GeneralNetwork};
 use crate::mdr;
 use crate::theory;
 use crate::tolerances;
@@ -147,8 +147,10 @@ impl SolveOptions {
 /// Solve an impact. Elastic materials use the Hertz closed form whatever the solver.
 ///
 /// A general material (Prony series in shear and bulk) is solved by `fast` and `reference`
-/// (and `auto`) from its canonical `G_eq` series; `mdr` and `mdr-euler` refuse it
-/// ([`Error::Unsupported`]): their element network is the standard solid's.
+/// (and `auto`) from its canonical `G_eq` series, and by `mdr` on its element network built from
+/// `G` and `K` ([`GeneralNetwork`], an independent path); `mdr-euler` refuses it
+/// ([`Error::Unsupported`], [`MDR_EULER_GENERAL_UNSUPPORTED`]): the paper's explicit Euler
+/// network is the standard solid's only.
 ///
 /// In nearly elastic cases a solver's discretisation error can push the CoR above 1; since
 /// `e <= 1` holds exactly (a passive material dissipates a non-negative energy), such a value is
@@ -175,20 +177,24 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
     Ok(canonical.to_si(impact))
 }
 
-/// The one-line refusal of the MDR schemes for a general material.
-pub const MDR_GENERAL_UNSUPPORTED: &str = "mdr: general Prony materials are not supported yet \
-     (the element network is the standard solid's); use fast or reference";
+/// The one-line refusal of `mdr-euler` for a general material.
+pub const MDR_EULER_GENERAL_UNSUPPORTED: &str = mdr::EULER_GENERAL_UNSUPPORTED;
 
-/// The impact's material in canonical units, in the forms the MDR schemes need; a general
-/// material has no element network yet ([`Error::Unsupported`], [`MDR_GENERAL_UNSUPPORTED`]).
+/// The impact's material in canonical units, in the forms the MDR schemes need: the standard
+/// solid's network of Eq. (8), or a general material's network built from `G` and `K`.
 pub fn canonical_material(impact: &Impact) -> Result<mdr::CanonicalMaterial> {
     let s = impact.scales();
-    let Some(m) = impact.standard_solid() else {
-        return Err(Error::Unsupported(MDR_GENERAL_UNSUPPORTED.to_string()));
+    let network = match impact.material() {
+        ImpactMaterial::StandardSolid(m) => {
+            mdr::Network::StandardSolid(ElementNetwork::new(m).scaled(s.modulus, s.time))
+        }
+        ImpactMaterial::General(m) => {
+            mdr::Network::General(GeneralNetwork::new(m, s.modulus, s.time))
+        }
     };
     Ok(mdr::CanonicalMaterial {
         prony: impact.canonical_relaxation(),
-        network: ElementNetwork::new(m).scaled(s.modulus, s.time),
+        network,
     })
 }
 
@@ -248,6 +254,11 @@ fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
             };
         }
     };
+    if scheme == mdr::Scheme::Euler && impact.general_material().is_some() {
+        return Err(Error::Unsupported(
+            MDR_EULER_GENERAL_UNSUPPORTED.to_string(),
+        ));
+    }
     let material = canonical_material(impact)?;
     match opts.resolution {
         Some(r) => {
@@ -260,7 +271,7 @@ fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
                     limit: opts.work_limit,
                 });
             }
-            let layout = mdr::pilot(&material.prony)?;
+            let layout = mdr::pilot_material(&material)?;
             mdr::run_resolution(
                 scheme,
                 &material,

@@ -19,9 +19,11 @@
 use crate::error::{check, Error, Result};
 
 pub mod carson;
+pub mod network;
 pub mod rheology;
 pub mod table;
 
+pub use network::GeneralNetwork;
 pub use rheology::{BulkProny, BulkRheology, GeneralMaterial, ShearProny};
 
 /// Bulk behaviour: an elastic modulus `K_0` (Pa) or incompressible.

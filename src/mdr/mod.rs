@@ -8,22 +8,26 @@
 //! force would turn negative (outermost first: last in, first out) and are never traced again.
 //! The sphere obeys `m d'' = -F` (Eq. 9).
 //!
-//! Two time schemes: [`Scheme::Euler`] (the paper's explicit Euler on the network of Eq. 8) and
-//! [`Scheme::Exponential`] (exact exponential update of the Prony internal variables, trapezoidal
-//! rule for the sphere: unconditionally stable, second order). Both work in canonical units
+//! Two time schemes: [`Scheme::Euler`] (the paper's explicit Euler on the network of Eq. 8,
+//! standard solid only) and [`Scheme::Exponential`] (exact exponential update of the Prony
+//! internal variables, trapezoidal rule for the sphere: unconditionally stable, second order),
+//! on the standard solid's `G_eq` or on a general material's element network built from `G` and
+//! `K` ([`crate::material::GeneralNetwork`], module `network`). Both work in canonical units
 //! (`m = R = v0 = G_inf = 1`, see [`crate::impact`]); [`indent`] drives the foundation with a
 //! prescribed indentation instead.
 
 pub(crate) mod euler;
 pub(crate) mod exponential;
 pub mod indent;
+pub(crate) mod network;
 
 use crate::error::{Error, Result};
 use crate::impact::{History, Outcome, Work};
-use crate::material::{ElementNetwork, Prony};
+use crate::material::{ElementNetwork, GeneralNetwork, Prony};
 use crate::tolerances;
 use euler::EulerFoundation;
 use exponential::ExpFoundation;
+use network::NetFoundation;
 
 /// Element positions of the foundation.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -99,8 +103,92 @@ impl Scheme {
 pub struct CanonicalMaterial {
     /// Equivalent relaxation function (moduli / `G_inf`, times / time scale).
     pub prony: Prony,
-    /// The element network of Eq. (8) in the same units.
-    pub network: ElementNetwork,
+    /// The element network in the same units.
+    pub network: Network,
+}
+
+/// The element network of a canonical material.
+#[derive(Debug, Clone)]
+pub enum Network {
+    /// The standard solid's network of Eq. (8). [`Scheme::Exponential`] integrates the
+    /// standard solid through its closed-form `G_eq` ([`CanonicalMaterial::prony`]) and
+    /// [`Scheme::Euler`] through this network.
+    StandardSolid(ElementNetwork),
+    /// A general material's network built from `G` and `K` ([`GeneralNetwork`]), which
+    /// [`Scheme::Exponential`] integrates; [`Scheme::Euler`] refuses it.
+    General(GeneralNetwork),
+}
+
+/// The one-line refusal of [`Scheme::Euler`] for a general material.
+pub const EULER_GENERAL_UNSUPPORTED: &str = "mdr-euler: the paper's explicit Euler network is \
+     the standard solid's only; use mdr, fast or reference for a general material";
+
+/// The step interface of the exponential scheme's foundations: the standard solid's through
+/// `G_eq` ([`ExpFoundation`]) and the general network ([`NetFoundation`]).
+pub(crate) trait Stepper {
+    /// Set the step size.
+    fn set_step(&mut self, dt: f64);
+    /// Force over the current contact set at depth `d` with the current states.
+    fn force_now(&self, d: f64) -> f64;
+    /// End-of-step force over the current contact set, affine in the rate `r`.
+    fn affine(&self, d: f64) -> exponential::Affine;
+    /// End-of-step force and `df/dr` of the elements entering during a step at rate `r > 0`.
+    fn entering(&self, d: f64, r: f64) -> (f64, f64);
+    /// End-of-step force (per `8 dx`) of the outermost element in contact, if any.
+    fn outer_force(&self, d: f64, r: f64) -> Option<f64>;
+    /// Force (per `8 dx`) of the outermost element with the current states.
+    fn outer_force_start(&self, d: f64) -> f64;
+    /// Affine contribution of the outermost element.
+    fn outer_affine(&self, d: f64) -> exponential::Affine;
+    /// Remove the outermost element.
+    fn pop(&mut self);
+    /// Advance all elements by one step at rate `r` from depth `d` (admitting entering ones).
+    fn commit(&mut self, d: f64, r: f64, admit: bool);
+    /// Elements in contact.
+    fn in_contact(&self) -> usize;
+    /// Element positions.
+    fn geometry(&self) -> &Foundation;
+    /// `(maximum elements in contact, element updates)`.
+    fn counters(&self) -> (usize, u64);
+}
+
+impl Stepper for ExpFoundation {
+    fn set_step(&mut self, dt: f64) {
+        ExpFoundation::set_step(self, dt)
+    }
+    fn force_now(&self, d: f64) -> f64 {
+        ExpFoundation::force_now(self, d)
+    }
+    fn affine(&self, d: f64) -> exponential::Affine {
+        ExpFoundation::affine(self, d)
+    }
+    fn entering(&self, d: f64, r: f64) -> (f64, f64) {
+        ExpFoundation::entering(self, d, r)
+    }
+    fn outer_force(&self, d: f64, r: f64) -> Option<f64> {
+        ExpFoundation::outer_force(self, d, r)
+    }
+    fn outer_force_start(&self, d: f64) -> f64 {
+        ExpFoundation::outer_force_start(self, d)
+    }
+    fn outer_affine(&self, d: f64) -> exponential::Affine {
+        ExpFoundation::outer_affine(self, d)
+    }
+    fn pop(&mut self) {
+        ExpFoundation::pop(self)
+    }
+    fn commit(&mut self, d: f64, r: f64, admit: bool) {
+        ExpFoundation::commit(self, d, r, admit)
+    }
+    fn in_contact(&self) -> usize {
+        ExpFoundation::in_contact(self)
+    }
+    fn geometry(&self) -> &Foundation {
+        ExpFoundation::geometry(self)
+    }
+    fn counters(&self) -> (usize, u64) {
+        (self.max_elements, self.element_updates)
+    }
 }
 
 /// Characteristic sizes of an impact used to lay out the discretisation.
@@ -234,7 +322,33 @@ pub fn run_exponential(
     history: bool,
 ) -> Result<Outcome> {
     let geom = Foundation::new(grid.dx, 1.0, capacity);
-    let mut f = ExpFoundation::new(geom, prony);
+    run_stepper(ExpFoundation::new(geom, prony), grid, capacity, history)
+}
+
+/// Run one impact with the exponential scheme on the element network of a general material
+/// (built from `G` and `K`, not from `G_eq`) on a fixed grid (canonical units).
+pub fn run_network(
+    network: &GeneralNetwork,
+    grid: &Grid,
+    capacity: usize,
+    history: bool,
+) -> Result<Outcome> {
+    let geom = Foundation::new(grid.dx, 1.0, capacity);
+    run_stepper(
+        NetFoundation::new(geom, network.clone()),
+        grid,
+        capacity,
+        history,
+    )
+}
+
+/// The exponential scheme's time loop over a foundation.
+fn run_stepper<F: Stepper>(
+    mut f: F,
+    grid: &Grid,
+    capacity: usize,
+    history: bool,
+) -> Result<Outcome> {
     let (mut t, mut d, mut v, mut force) = (0.0_f64, 0.0_f64, 1.0_f64, 0.0_f64);
     let mut hist = start_history(history);
     let mut tr = Tracker::default();
@@ -309,20 +423,21 @@ pub fn run_exponential(
             });
         }
     }
+    let (max_elements, element_updates) = f.counters();
     Ok(finish(
         "mdr",
         v,
         t_end,
         &tr,
         hist,
-        (steps, f.max_elements, f.element_updates),
+        (steps, max_elements, element_updates),
     ))
 }
 
 /// Solve `phi(r) = r - v + q (F_n + F_{n+1}(r)) = 0` with entering elements: `phi` is
 /// continuous and increasing, with a root in `(0, r_fixed]`. Safeguarded Newton.
-fn solve_with_entering(
-    f: &ExpFoundation,
+fn solve_with_entering<F: Stepper>(
+    f: &F,
     d: f64,
     v: f64,
     force: f64,
@@ -372,8 +487,11 @@ pub fn run_euler(
     capacity: usize,
     history: bool,
 ) -> Result<Outcome> {
+    let Network::StandardSolid(network) = &material.network else {
+        return Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string()));
+    };
     let geom = Foundation::new(grid.dx, 1.0, capacity);
-    let mut f = EulerFoundation::new(geom, material.network);
+    let mut f = EulerFoundation::new(geom, *network);
     let (mut t, mut d, mut v) = (0.0_f64, 0.0_f64, 1.0_f64);
     let mut hist = start_history(history);
     let mut tr = Tracker::default();
@@ -483,8 +601,26 @@ pub fn euler_step_bound(prony: &Prony, contact_radius: f64) -> f64 {
 /// Estimate the layout of an impact with coarse exponential-MDR runs, restarting with a
 /// rescaled grid when the first guess (the glassy Hertz impact) was far off.
 pub fn pilot(prony: &Prony) -> Result<Layout> {
+    pilot_with(prony.glassy(), |grid, capacity| {
+        run_exponential(prony, grid, capacity, false)
+    })
+}
+
+/// [`pilot`] for a canonical material: a general material's layout comes from coarse runs of
+/// its own network (glassy modulus from the network's instantaneous stiffness), the standard
+/// solid's from [`pilot`] on its `G_eq`.
+pub fn pilot_material(material: &CanonicalMaterial) -> Result<Layout> {
+    match &material.network {
+        Network::General(net) => pilot_with(net.entry_stiffness(0.0).0, |grid, capacity| {
+            run_network(net, grid, capacity, false)
+        }),
+        Network::StandardSolid(_) => pilot(&material.prony),
+    }
+}
+
+fn pilot_with(glassy: f64, run: impl Fn(&Grid, usize) -> Result<Outcome>) -> Result<Layout> {
     // glassy Hertz: k = 16/3 G_eq(0), d = (5/(4k))^(2/5), a = sqrt(d), t_c = 2.943 d
-    let k = 16.0 / 3.0 * prony.glassy();
+    let k = 16.0 / 3.0 * glassy;
     let d = (1.25 / k).powf(0.4);
     let mut layout = Layout {
         contact_radius: d.sqrt(),
@@ -495,7 +631,7 @@ pub fn pilot(prony: &Prony) -> Result<Layout> {
     for _ in 0..tolerances::PILOT_MAX_RESTARTS {
         let mut grid = Grid::from_layout(&layout, n, m);
         grid.max_steps = 8 * m as u64;
-        match run_exponential(prony, &grid, 8 * n, false) {
+        match run(&grid, 8 * n) {
             Ok(o) => {
                 let new = Layout {
                     contact_radius: o.max_contact_radius,
@@ -546,9 +682,15 @@ pub fn run_resolution(
 ) -> Result<Outcome> {
     let grid = Grid::from_layout(layout, elements, steps);
     let capacity = capacity_for(grid.dx, layout.contact_radius);
-    match scheme {
-        Scheme::Exponential => run_exponential(&material.prony, &grid, capacity, history),
-        Scheme::Euler => {
+    match (scheme, &material.network) {
+        (Scheme::Exponential, Network::General(net)) => run_network(net, &grid, capacity, history),
+        (Scheme::Exponential, Network::StandardSolid(_)) => {
+            run_exponential(&material.prony, &grid, capacity, history)
+        }
+        (Scheme::Euler, Network::General(_)) => {
+            Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string()))
+        }
+        (Scheme::Euler, Network::StandardSolid(_)) => {
             let bound = euler_step_bound(&material.prony, layout.contact_radius);
             let dt = grid.dt_compression.max(grid.dt_restitution);
             if dt > bound {
@@ -610,7 +752,10 @@ pub fn solve_rtol(
     history: bool,
     work_limit: u64,
 ) -> Result<Outcome> {
-    let layout = pilot(&material.prony)?;
+    if let (Scheme::Euler, Network::General(_)) = (scheme, &material.network) {
+        return Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string()));
+    }
+    let layout = pilot_material(material)?;
     let (mut n, mut m) = match scheme {
         Scheme::Exponential => (tolerances::MDR_START_ELEMENTS, tolerances::MDR_START_STEPS),
         Scheme::Euler => (
