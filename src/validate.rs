@@ -779,7 +779,8 @@ Prony series of the Carson-domain composition (`material::carson`, poles by brac
 *G_eq check* is its largest relative difference from the independent numerical inversion of the Carson \
 formula (`theory::bromwich`, Talbot contour) at 61 times from `1e-3 tau_min` to `1e3 tau_max`. Errors are \
 relative CoR errors against `reference` at rtol 1e-10 (a different integrator of the same `G_eq`); `mdr` \
-builds its element network from G and K where it supports them, or refuses. Re-run: `mdr-impact validate`.\n\n";
+solves on an element network built from G and K themselves (a G branch in series with a K + G/3 branch, \
+never from the `G_eq` poles), the second independent path. Re-run: `mdr-impact validate`.\n\n";
 
 /// Per general-material case: `G_eq` terms, the `G_eq` check against the Carson inversion, the
 /// reference CoR and the errors of `fast` (rtol 1e-6, 1e-10) and `mdr` (rtol 1e-4).
