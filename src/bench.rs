@@ -643,16 +643,27 @@ fn time_rows(rows: &[crate::validate::ExternalRow], tick: &dyn Fn()) -> Result<V
 /// Groups of rows reported by [`timing_table`]: name and membership.
 #[allow(clippy::type_complexity)]
 pub fn timing_groups() -> Vec<(&'static str, fn(&crate::validate::ExternalRow) -> bool)> {
+    let [(elastic, _), (dissipative, _), (strongly, _)] = cor_groups();
     vec![
         ("all rows", |_| true),
-        ("nearly elastic (e >= 0.9)", |r| r.cor >= 0.9),
-        ("dissipative (0.1 <= e < 0.9)", |r| {
-            (0.1..0.9).contains(&r.cor)
-        }),
-        ("strongly dissipative (e < 0.1)", |r| r.cor < 0.1),
+        (elastic, |r| cor_groups()[0].1(r.cor)),
+        (dissipative, |r| cor_groups()[1].1(r.cor)),
+        (strongly, |r| cor_groups()[2].1(r.cor)),
         ("strongly compressible (nu < 0)", |r| r.nu < 0.0),
         ("near-incompressible (nu >= 0.45)", |r| r.nu >= 0.45),
         ("stiff (tau = p2 p3 <= 1e-3)", |r| r.p2 * r.p3 <= 1e-3),
+    ]
+}
+
+/// Membership of a CoR group: the CoR alone decides.
+pub type CorGroup = (&'static str, fn(f64) -> bool);
+
+/// The groups of [`timing_groups`] that split the rows by their CoR alone.
+pub fn cor_groups() -> [CorGroup; 3] {
+    [
+        ("nearly elastic (e >= 0.9)", |e| e >= 0.9),
+        ("dissipative (0.1 <= e < 0.9)", |e| (0.1..0.9).contains(&e)),
+        ("strongly dissipative (e < 0.1)", |e| e < 0.1),
     ]
 }
 
@@ -1050,25 +1061,12 @@ pub fn general_timing_table(rows: &[GeneralTiming], random: Option<&[RowTiming]>
         "| case | G_eq terms | CoR | median time | steps / evaluations | standard solid, same CoR group (random rows): median time, steps / evaluations | ratio |\n\
          | --- | --- | --- | --- | --- | --- | --- |\n",
     );
-    let groups = timing_groups();
     for r in rows {
-        let probe = crate::validate::ExternalRow {
-            nu: 0.0,
-            p2: 1.0,
-            p3: 1.0,
-            cor: r.cor,
-            contact_time: 0.0,
-            max_indentation: 0.0,
-            est_rel_err: 0.0,
-        };
-        // the CoR group (the first groups after "all rows" split by CoR only)
-        let same = groups
-            .iter()
-            .skip(1)
-            .take(3)
-            .find(|(_, member)| member(&probe))
+        let same = cor_groups()
+            .into_iter()
+            .find(|(_, member)| member(r.cor))
             .and_then(|(name, member)| {
-                let sel: Vec<&RowTiming> = random?.iter().filter(|t| member(&t.row)).collect();
+                let sel: Vec<&RowTiming> = random?.iter().filter(|t| member(t.row.cor)).collect();
                 if sel.is_empty() {
                     return None;
                 }
@@ -1077,7 +1075,7 @@ pub fn general_timing_table(rows: &[GeneralTiming], random: Option<&[RowTiming]>
                 let n = sel.len() as f64;
                 let steps = sel.iter().map(|t| t.steps[0] as f64).sum::<f64>() / n;
                 let evals = sel.iter().map(|t| t.evaluations[0] as f64).sum::<f64>() / n;
-                Some((*name, v[v.len() / 2], steps, evals))
+                Some((name, v[v.len() / 2], steps, evals))
             });
         let (std_text, ratio) = match same {
             Some((name, t, steps, evals)) => (

@@ -681,11 +681,11 @@ const GLASSY_TEXT: &str = "\n### The glassy corner (external)\n\n\
 `reference/external/cor_python_glassy.csv`: 26 rows with `p2` from 1.3e-8 to 1e-6 and `p3` from 98 to \
 1e4 (CoR 3.2e-6 to 0.61), computed by the same SciPy generator (`cor_ref.py --glassy`, estimated accuracy \
 1.0e-11 or better): the 19 rows where `mdr-impact stress` found `fast` and `reference` apart by more than \
-rtol 1e-10 or 1e-11, the three rows where `fast` once missed rtol 1e-6 by 11x to 41x, the two glassy \
-catalogue cases, and two rows where a second stress run found `reference` 1.6x and 2.1x outside rtol 1e-8. \
-The SciPy solution sides with `fast` on every row; `reference` had errors its two runs did not see (up to \
-18x rtol 1e-11, 2.1x rtol 1e-8). Where `G_eq(0) / G_eq(inf) > 1e5` it now accepts the difference of its \
-runs only below `0.1 rtol` (`theory::REF_GLASSY_SAFETY`) and refuses requests with `rtol e` below 1e-12 \
+rtol 1e-10 or 1e-11, the three rows where an earlier `fast` missed rtol 1e-6, the two glassy catalogue \
+cases, and two rows where a second stress run found `reference` outside rtol 1e-8. The SciPy solution \
+sides with `fast` on every row; the two runs of `reference` agreed there while both were off, so where \
+`G_eq(0) / G_eq(inf) > 1e5` it accepts the difference of its runs only below `0.1 rtol` \
+(`theory::REF_GLASSY_SAFETY`) and refuses requests with `rtol e` below 1e-12 \
 (`theory::REF_GLASSY_ABS_FLOOR`). Errors at rtol 1e-10 include the table's own (up to 1.0e-11).\n\n";
 
 /// Parse the external reference tables: the rows of [`EXTERNAL_TABLE`], then those of

@@ -135,7 +135,13 @@ fn success_means_estimate_within_rtol() {
 fn refusals_tell_the_truth() {
     let (nu, p2, p3) = (0.5, 1e-6, 724.4);
     match groups_solve(nu, p2, p3, SolverKind::Mdr, 1e-4) {
-        Ok(o) => assert!(o.cor_error_estimate.unwrap() <= 1e-4),
+        Ok(o) => {
+            assert!(o.cor_error_estimate.unwrap() <= 1e-4);
+            let tight = groups_solve(nu, p2, p3, SolverKind::Fast, 1e-10)
+                .unwrap()
+                .cor;
+            assert!(((o.cor - tight) / tight).abs() <= 1e-4);
+        }
         Err(Error::AccuracyNotReached {
             estimate, required, ..
         }) => assert!(estimate > required, "{estimate:e} <= {required:e}"),

@@ -124,7 +124,7 @@ pub(super) fn verified<const K: usize>(
                 local
             },
             required: rtol,
-            levels,
+            levels: levels + floor_solves,
         }),
         (false, false, None) => Err(Error::NoConvergence {
             what: "fast: successive solves",
