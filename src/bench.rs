@@ -879,6 +879,7 @@ mod tests {
                 seconds: 3e-5,
                 steps: 40,
                 evaluations: 250,
+                unreduced_seconds: 6e-5,
             },
             GeneralTiming {
                 id: "g-dissipative",
@@ -887,6 +888,7 @@ mod tests {
                 seconds: 2e-5,
                 steps: 35,
                 evaluations: 200,
+                unreduced_seconds: 4e-5,
             },
         ];
         let table = general_timing_table(&general, Some(&random));
@@ -1025,6 +1027,9 @@ pub struct GeneralTiming {
     pub steps: u64,
     /// Force and history evaluations of one solve.
     pub evaluations: u64,
+    /// Median wall time per impact without the merge of terms outside the contact window
+    /// (`fast::impact_unreduced`), same run (s).
+    pub unreduced_seconds: f64,
 }
 
 /// Time `fast` (CoR only, one core, rtol 1e-6) on every general-material case: the median over
@@ -1041,7 +1046,12 @@ pub fn general_timing(budget: f64) -> Result<Vec<GeneralTiming>> {
             };
             let out = solve(&imp, &opts)?;
             let (seconds, _) = median_time(budget, || solve(&imp, &opts).map(|_| ()))?;
+            let p = imp.canonical_relaxation();
+            let (unreduced_seconds, _) = median_time(budget, || {
+                crate::fast::impact_unreduced(&p, opts.rtol, false).map(|_| ())
+            })?;
             Ok(GeneralTiming {
+                unreduced_seconds,
                 id: case.id,
                 terms: imp.canonical_relaxation().terms.len(),
                 cor: out.cor,
@@ -1058,8 +1068,8 @@ pub fn general_timing(budget: f64) -> Result<Vec<GeneralTiming>> {
 /// the ratio of the median times.
 pub fn general_timing_table(rows: &[GeneralTiming], random: Option<&[RowTiming]>) -> String {
     let mut s = String::from(
-        "| case | G_eq terms | CoR | median time | steps / evaluations | standard solid, same CoR group (random rows): median time, steps / evaluations | ratio |\n\
-         | --- | --- | --- | --- | --- | --- | --- |\n",
+        "| case | G_eq terms | CoR | median time | steps / evaluations | without the merge of far terms (`fast::reduce`) | standard solid, same CoR group (random rows): median time, steps / evaluations | ratio |\n\
+         | --- | --- | --- | --- | --- | --- | --- | --- |\n",
     );
     for r in rows {
         let same = cor_groups()
@@ -1086,13 +1096,14 @@ pub fn general_timing_table(rows: &[GeneralTiming], random: Option<&[RowTiming]>
         };
         let _ = writeln!(
             s,
-            "| {} | {} | {:.4} | {} | {} / {} | {std_text} | {ratio} |",
+            "| {} | {} | {:.4} | {} | {} / {} | {} | {std_text} | {ratio} |",
             r.id,
             r.terms,
             r.cor,
             fmt_time(r.seconds),
             r.steps,
-            r.evaluations
+            r.evaluations,
+            fmt_time(r.unreduced_seconds)
         );
     }
     s

@@ -3,9 +3,10 @@
 //! dimensionless space (Eq. 11) with its regime; reference values come from the independent
 //! theory ([`crate::theory`]) at run time and from the committed files in `reference/`.
 
+use crate::bodies::{Body, BodyMaterial, Side, TwoBodies};
 use crate::error::Result;
 use crate::impact::{Groups, Impact, Sphere};
-use crate::material::{BulkProny, BulkRheology, GeneralMaterial, ShearProny};
+use crate::material::{BulkProny, BulkRheology, GeneralMaterial, Material, ShearProny};
 
 /// The regimes in which accuracy is reported.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -237,6 +238,117 @@ pub const GENERAL: &[GeneralCase] = &[
     },
 ];
 
+/// A two-body collision case (theory notes §8), SI units: body A, body B, relative velocity.
+#[derive(Debug, Clone, Copy)]
+pub struct TwoBodyCase {
+    /// Short identifier.
+    pub id: &'static str,
+    /// What it stands for.
+    pub what: &'static str,
+    /// Builds the impact.
+    pub build: fn() -> Result<Impact>,
+}
+
+impl TwoBodyCase {
+    /// The impact.
+    pub fn impact(&self) -> Result<Impact> {
+        (self.build)()
+    }
+}
+
+/// The default scene's elastomer as a body material.
+fn elastomer() -> Result<BodyMaterial> {
+    Ok(BodyMaterial::StandardSolid(Material::with_poisson(
+        1.0e6, 1.0e7, 500.0, 0.49,
+    )?))
+}
+
+/// The polymer of `scenes/two_spheres.toml`: three shear terms and a relaxing bulk.
+fn polymer() -> Result<BodyMaterial> {
+    let shear = ShearProny::new(5.0e6, &[(2.0e7, 1.0e-6), (3.0e7, 1.0e-5), (1.0e7, 1.0e-4)])?;
+    let bulk = BulkProny::new(2.0e8, &[(1.0e8, 1.0e-5)])?;
+    Ok(BodyMaterial::General(GeneralMaterial::new(
+        shear,
+        BulkRheology::Prony(bulk),
+    )?))
+}
+
+/// Elastic steel (E = 210 GPa, nu = 0.3) as a general material without terms.
+fn steel() -> Result<BodyMaterial> {
+    let g = 210.0e9 / (2.0 * 1.3);
+    Ok(BodyMaterial::General(GeneralMaterial::new(
+        ShearProny::new(g, &[])?,
+        BulkRheology::Poisson(0.3),
+    )?))
+}
+
+fn pair(a: Body, b: Body, v0: f64) -> Result<Impact> {
+    Impact::with_bodies(TwoBodies::new(a, b)?, v0)
+}
+
+/// Two-body collisions: every combination the two-body model adds (two viscoelastic spheres,
+/// identical spheres, a viscoelastic sphere on an elastic or viscoelastic wall, a rigid sphere on
+/// a viscoelastic wall, compressible standard solids with far-apart relaxation times).
+pub const TWO_BODIES: &[TwoBodyCase] = &[
+    TwoBodyCase {
+        id: "elastomer-polymer-spheres",
+        what: "20 mm elastomer ball against a 10 mm 3-term polymer ball (scenes/two_spheres.toml)",
+        build: || {
+            pair(
+                Body::with_density(Side::A, 1100.0, 1.0e-2, elastomer()?)?,
+                Body::with_density(Side::B, 1200.0, 5.0e-3, polymer()?)?,
+                2.0,
+            )
+        },
+    },
+    TwoBodyCase {
+        id: "identical-elastomer-spheres",
+        what: "two identical 10 mm elastomer balls",
+        build: || {
+            pair(
+                Body::new(Side::A, 4.11e-3, 5.0e-3, elastomer()?)?,
+                Body::new(Side::B, 4.11e-3, 5.0e-3, elastomer()?)?,
+                0.99,
+            )
+        },
+    },
+    TwoBodyCase {
+        id: "polymer-on-steel-plate",
+        what: "10 mm polymer ball on an elastic steel plate (wall)",
+        build: || {
+            pair(
+                Body::with_density(Side::A, 1200.0, 5.0e-3, polymer()?)?,
+                Body::new(Side::B, f64::INFINITY, f64::INFINITY, steel()?)?,
+                1.0,
+            )
+        },
+    },
+    TwoBodyCase {
+        id: "steel-ball-on-polymer-block",
+        what: "10 mm elastic steel ball on a polymer block (wall)",
+        build: || {
+            pair(
+                Body::with_density(Side::A, 7850.0, 5.0e-3, steel()?)?,
+                Body::new(Side::B, f64::INFINITY, f64::INFINITY, polymer()?)?,
+                1.0,
+            )
+        },
+    },
+    TwoBodyCase {
+        id: "compressible-standard-solids",
+        what: "standard solids nu = 0.3 (tau 10 us) and nu = -0.5 (tau 1 ms), masses 1:10",
+        build: || {
+            let a = Material::with_poisson(2.0e6, 2.0e7, 200.0, 0.3)?;
+            let b = Material::with_poisson(1.0e6, 5.0e6, 5000.0, -0.5)?;
+            pair(
+                Body::new(Side::A, 1.0e-3, 5.0e-3, BodyMaterial::StandardSolid(a))?,
+                Body::new(Side::B, 1.0e-2, 1.0e-2, BodyMaterial::StandardSolid(b))?,
+                3.0,
+            )
+        },
+    },
+];
+
 /// Look up an impact case by id.
 pub fn impact_case(id: &str) -> Option<&'static Case> {
     IMPACTS.iter().find(|c| c.id == id)
@@ -262,6 +374,9 @@ mod tests {
         for c in GENERAL {
             let imp = c.impact().unwrap();
             assert!(imp.canonical_relaxation().terms.len() >= c.shear_terms);
+        }
+        for c in TWO_BODIES {
+            assert!(c.impact().unwrap().bodies().is_some(), "{}", c.id);
         }
         for r in Regime::ALL {
             assert!(

@@ -35,7 +35,7 @@ use std::path::{Path, PathBuf};
 use rayon::prelude::*;
 
 use crate::error::{Error, Result};
-use crate::impact::{Impact, ImpactMaterial};
+use crate::impact::Impact;
 use crate::output::{fmt, write_atomic};
 use crate::solver::{solve, SolveOptions};
 use crate::theory::HERTZ_I;
@@ -193,12 +193,10 @@ impl Curve {
     }
 }
 
-/// `impact` with its velocity replaced by `v0` (m/s): same sphere and material.
+/// `impact` with its velocity replaced by `v0` (m/s): same sphere(s) and material(s)
+/// ([`Impact::at_velocity`]).
 pub fn impact_at(impact: &Impact, v0: f64) -> Result<Impact> {
-    match impact.material() {
-        ImpactMaterial::StandardSolid(m) => Impact::new(impact.sphere(), v0, *m),
-        ImpactMaterial::General(m) => Impact::with_general(impact.sphere(), v0, m.clone()),
-    }
+    impact.at_velocity(v0)
 }
 
 /// Velocity (m/s) where the Hertz contact time with plane-strain modulus `e_star` (Pa) equals

@@ -13,6 +13,7 @@
 //! ([`ImpactMaterial`]); for the latter `G_inf` is its relaxed shear modulus `g_inf`, and the
 //! dimensionless groups of Eq. (11) do not exist ([`Impact::groups`] is `None`).
 
+use crate::bodies::TwoBodies;
 use crate::error::{check, Error, Result};
 use crate::material::{Bulk, GeneralMaterial, Material, Prony};
 
@@ -121,14 +122,20 @@ pub enum ImpactMaterial {
     StandardSolid(Material),
     /// General linear viscoelasticity in shear and bulk.
     General(GeneralMaterial),
+    /// Two colliding bodies (theory notes §8): the half-space has their combined compliance
+    /// and the sphere their effective mass and radius.
+    TwoBodies(Box<TwoBodies>),
 }
 
 impl ImpactMaterial {
-    /// Relaxed shear modulus `G(inf)` (Pa): the modulus scale `G_inf` of the canonical units.
+    /// The modulus scale `G_inf` of the canonical units (Pa): the relaxed shear modulus
+    /// `G(inf)`; for two bodies their relaxed shear moduli combined like compliances
+    /// ([`TwoBodies::modulus_scale`]).
     pub fn g_inf(&self) -> f64 {
         match self {
             ImpactMaterial::StandardSolid(m) => m.g_inf(),
             ImpactMaterial::General(m) => m.shear().g_inf(),
+            ImpactMaterial::TwoBodies(b) => b.modulus_scale(),
         }
     }
 }
@@ -182,6 +189,31 @@ impl Impact {
             velocity,
             ImpactMaterial::General(material),
             equivalent,
+        )
+    }
+
+    /// Collision of two bodies at the relative normal velocity `velocity` (m/s): a rigid sphere
+    /// of the effective mass and radius on a half-space with the combined `G_tot`
+    /// ([`TwoBodies`]). [`Impact::sphere`] is then the effective sphere and
+    /// [`Impact::equivalent_relaxation`] is `G_tot`.
+    pub fn with_bodies(bodies: TwoBodies, velocity: f64) -> Result<Self> {
+        let sphere = Sphere::new(bodies.effective_mass(), bodies.effective_radius())?;
+        let equivalent = bodies.combined_relaxation().clone();
+        Self::build(
+            sphere,
+            velocity,
+            ImpactMaterial::TwoBodies(Box::new(bodies)),
+            equivalent,
+        )
+    }
+
+    /// The same impact at another velocity `v0` (m/s): sphere(s) and material(s) unchanged.
+    pub fn at_velocity(&self, velocity: f64) -> Result<Self> {
+        Self::build(
+            self.sphere,
+            velocity,
+            self.material.clone(),
+            self.equivalent.clone(),
         )
     }
 
@@ -263,7 +295,7 @@ impl Impact {
     pub fn standard_solid(&self) -> Option<&Material> {
         match &self.material {
             ImpactMaterial::StandardSolid(m) => Some(m),
-            ImpactMaterial::General(_) => None,
+            ImpactMaterial::General(_) | ImpactMaterial::TwoBodies(_) => None,
         }
     }
 
@@ -271,7 +303,15 @@ impl Impact {
     pub fn general_material(&self) -> Option<&GeneralMaterial> {
         match &self.material {
             ImpactMaterial::General(m) => Some(m),
-            ImpactMaterial::StandardSolid(_) => None,
+            ImpactMaterial::StandardSolid(_) | ImpactMaterial::TwoBodies(_) => None,
+        }
+    }
+
+    /// The two bodies, if the impact is a two-body collision.
+    pub fn bodies(&self) -> Option<&TwoBodies> {
+        match &self.material {
+            ImpactMaterial::TwoBodies(b) => Some(b),
+            _ => None,
         }
     }
 
@@ -285,7 +325,9 @@ impl Impact {
     pub fn is_elastic(&self) -> bool {
         match &self.material {
             ImpactMaterial::StandardSolid(m) => m.is_elastic(),
-            ImpactMaterial::General(_) => self.equivalent.is_elastic(),
+            ImpactMaterial::General(_) | ImpactMaterial::TwoBodies(_) => {
+                self.equivalent.is_elastic()
+            }
         }
     }
 
@@ -293,7 +335,9 @@ impl Impact {
     pub fn relaxed_effective_modulus(&self) -> f64 {
         match &self.material {
             ImpactMaterial::StandardSolid(m) => m.effective_modulus(m.g_inf()),
-            ImpactMaterial::General(_) => 4.0 * self.equivalent.relaxed,
+            ImpactMaterial::General(_) | ImpactMaterial::TwoBodies(_) => {
+                4.0 * self.equivalent.relaxed
+            }
         }
     }
 

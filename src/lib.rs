@@ -9,7 +9,8 @@
 //! - [`material`]: Eqs. (1)–(3), the equivalent relaxation function and the element of Eq. (8);
 //!   general Prony rheologies in shear and bulk, their exact `G_eq` and the two-body combination
 //!   (theory notes §8);
-//! - [`impact`]: Eqs. (10)–(11), scales and outcome;
+//! - [`impact`]: Eqs. (10)–(11), scales and outcome; [`bodies`]: two colliding bodies (theory
+//!   notes §8);
 //! - [`mdr`]: the MDR foundation, Eqs. (4)–(9), with two time schemes;
 //! - [`theory`]: Hertz, Lee–Radok and Ting/Graham, independent of [`mdr`];
 //! - [`solver`]: solver choice and dispatch.
@@ -19,6 +20,7 @@
 
 pub mod batch;
 pub mod bench;
+pub mod bodies;
 pub mod catalogue;
 pub mod curve;
 pub mod error;
@@ -39,6 +41,7 @@ pub mod theory;
 pub mod tolerances;
 pub mod validate;
 
+pub use bodies::{Body, BodyMaterial, Side, TwoBodies};
 pub use error::{Error, Result};
 pub use impact::{Groups, History, Impact, ImpactMaterial, Outcome, Sphere, Work};
 pub use material::{Bulk, GeneralMaterial, Material, Prony, PronyTerm};

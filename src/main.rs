@@ -268,7 +268,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 }
             }
             if json {
-                println!("{}", output::json(&outcome));
+                println!("{}", output::impact_json(&scene.impact, &outcome));
             } else {
                 print!("{}", output::summary(&scene.impact, &outcome));
             }

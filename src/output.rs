@@ -3,9 +3,10 @@
 use std::io::Write;
 use std::path::Path;
 
+use crate::bodies::BodyMaterial;
 use crate::error::{Error, Result};
 use crate::impact::{History, Impact, ImpactMaterial, Outcome};
-use crate::material::{Bulk, BulkRheology};
+use crate::material::{Bulk, BulkRheology, GeneralMaterial, Material};
 
 /// Write a file atomically: the bytes go to a temporary file in the same directory, which is
 /// renamed over `path` only when complete. Parent directories are created.
@@ -51,11 +52,53 @@ pub fn fmt(x: f64) -> String {
     format!("{x:e}")
 }
 
+/// One line describing a standard solid.
+fn standard_solid(m: &Material) -> String {
+    let nu = if m.bulk() == Bulk::Incompressible {
+        0.5
+    } else {
+        m.poisson()
+    };
+    format!(
+        "G_inf = {:.4e} Pa, G_1 = {:.4e} Pa, eta = {:.4e} Pa s, nu = {}",
+        m.g_inf(),
+        m.g_1(),
+        m.eta(),
+        if nu == 0.5 {
+            "0.5 (incompressible)".to_string()
+        } else {
+            format!("{nu:.6}")
+        }
+    )
+}
+
+/// One line describing a general material.
+fn general(m: &GeneralMaterial) -> String {
+    let shear = m.shear();
+    let bulk = match m.bulk() {
+        BulkRheology::Incompressible | BulkRheology::Poisson(_) => "incompressible".to_string(),
+        BulkRheology::Elastic(k) => format!("elastic, K_0 = {k:.4e} Pa"),
+        BulkRheology::Prony(p) => format!(
+            "{} term{}, k_inf = {:.4e} Pa",
+            p.terms().len(),
+            if p.terms().len() == 1 { "" } else { "s" },
+            p.k_inf()
+        ),
+    };
+    format!(
+        "general: {} shear term{}, g_inf = {:.4e} Pa; bulk {bulk}",
+        shear.terms().len(),
+        if shear.terms().len() == 1 { "" } else { "s" },
+        shear.g_inf()
+    )
+}
+
 /// Human-readable summary of an impact and its outcome, with units.
 ///
 /// The line of dimensionless groups (Eq. 11) is printed for the standard solid only; a general
 /// material is described by its number of shear and bulk terms, `g_inf` and the glassy and
 /// relaxed `G_eq`.
+/// For two bodies it lists both bodies and their velocities after the impact.
 pub fn summary(impact: &Impact, o: &Outcome) -> String {
     let s = impact.sphere();
     let mut out = String::new();
@@ -66,49 +109,27 @@ pub fn summary(impact: &Impact, o: &Outcome) -> String {
     );
     line("impact velocity", format!("{:.6e} m/s", impact.velocity()));
     match impact.material() {
-        ImpactMaterial::StandardSolid(m) => {
-            let nu = if m.bulk() == Bulk::Incompressible {
-                0.5
-            } else {
-                m.poisson()
-            };
+        ImpactMaterial::StandardSolid(m) => line("material", standard_solid(m)),
+        ImpactMaterial::General(m) => line("material", general(m)),
+        ImpactMaterial::TwoBodies(b) => {
+            for (name, body) in [("body A", b.a()), ("body B", b.b())] {
+                line(
+                    name,
+                    format!(
+                        "m = {:.6e} kg, R = {:.6e} m; {}",
+                        body.mass(),
+                        body.radius(),
+                        match body.material() {
+                            BodyMaterial::Rigid => "rigid".to_string(),
+                            BodyMaterial::StandardSolid(m) => standard_solid(m),
+                            BodyMaterial::General(m) => general(m),
+                        }
+                    ),
+                );
+            }
             line(
-                "material",
-                format!(
-                    "G_inf = {:.4e} Pa, G_1 = {:.4e} Pa, eta = {:.4e} Pa s, nu = {}",
-                    m.g_inf(),
-                    m.g_1(),
-                    m.eta(),
-                    if nu == 0.5 {
-                        "0.5 (incompressible)".to_string()
-                    } else {
-                        format!("{nu:.6}")
-                    }
-                ),
-            );
-        }
-        ImpactMaterial::General(m) => {
-            let shear = m.shear();
-            let bulk = match m.bulk() {
-                BulkRheology::Incompressible | BulkRheology::Poisson(_) => {
-                    "incompressible".to_string()
-                }
-                BulkRheology::Elastic(k) => format!("elastic, K_0 = {k:.4e} Pa"),
-                BulkRheology::Prony(p) => format!(
-                    "{} term{}, k_inf = {:.4e} Pa",
-                    p.terms().len(),
-                    if p.terms().len() == 1 { "" } else { "s" },
-                    p.k_inf()
-                ),
-            };
-            line(
-                "material",
-                format!(
-                    "general: {} shear term{}, g_inf = {:.4e} Pa; bulk {bulk}",
-                    shear.terms().len(),
-                    if shear.terms().len() == 1 { "" } else { "s" },
-                    shear.g_inf()
-                ),
+                "  (sphere above:",
+                "effective mass and radius; velocity: relative)".to_string(),
             );
         }
     }
@@ -144,6 +165,13 @@ pub fn summary(impact: &Impact, o: &Outcome) -> String {
         "rebound velocity",
         format!("{:.6e} m/s", o.rebound_velocity),
     );
+    if let Some(b) = impact.bodies() {
+        let (va, vb) = b.rebound_velocities(impact.velocity(), o.cor);
+        line(
+            "  body velocities after",
+            format!("A {va:.6e} m/s, B {vb:.6e} m/s (B at rest before)"),
+        );
+    }
     line("contact time", format!("{:.6e} s", o.contact_time));
     line("max indentation", format!("{:.6e} m", o.max_indentation));
     line(
@@ -180,6 +208,30 @@ pub fn summary(impact: &Impact, o: &Outcome) -> String {
 /// `fallback` (null, or why `auto` did not answer with `fast`) and `work`
 /// (`steps`, `elements`, `element_updates`, `evaluations`, `levels`).
 pub fn json(o: &Outcome) -> String {
+    value(o).to_string()
+}
+
+/// [`json`] of an impact's outcome: for a two-body collision with the key `bodies`
+/// (`{"a": {"rebound_velocity": ..}, "b": {..}}`, m/s, positive in A's approach direction, in
+/// the frame where B was at rest before the impact; see
+/// [`crate::bodies::TwoBodies::rebound_velocities`]); `max_indentation` is then the total
+/// compression of the two bodies.
+pub fn impact_json(impact: &Impact, o: &Outcome) -> String {
+    let mut v = value(o);
+    if let (Some(b), Some(map)) = (impact.bodies(), v.as_object_mut()) {
+        let (va, vb) = b.rebound_velocities(impact.velocity(), o.cor);
+        map.insert(
+            "bodies".into(),
+            serde_json::json!({
+                "a": {"rebound_velocity": va},
+                "b": {"rebound_velocity": vb},
+            }),
+        );
+    }
+    v.to_string()
+}
+
+fn value(o: &Outcome) -> serde_json::Value {
     serde_json::json!({
         "cor": o.cor,
         "rebound_velocity": o.rebound_velocity,
@@ -200,5 +252,4 @@ pub fn json(o: &Outcome) -> String {
             "levels": o.work.levels,
         },
     })
-    .to_string()
 }

@@ -47,6 +47,7 @@
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
+use crate::bodies::{Body, BodyMaterial, Side, TwoBodies};
 use crate::error::{escape_text, Error, Result};
 use crate::impact::{Impact, Sphere};
 use crate::material::{BulkProny, BulkRheology, GeneralMaterial, Material, ShearProny};
@@ -59,9 +60,10 @@ pub const DEFAULT_SCENE: &str = include_str!("../scenes/default.toml");
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawScene {
-    sphere: RawSphere,
+    sphere: Option<RawSphere>,
     impact: RawImpact,
-    material: RawMaterial,
+    material: Option<RawMaterial>,
+    body: Option<Vec<RawBody>>,
     #[serde(default)]
     solver: RawSolver,
     #[serde(default)]
@@ -75,6 +77,18 @@ struct RawSphere {
     radius: f64,
 }
 
+/// `[[body]]`: `mass` (kg, `inf` allowed) or `density` (kg/m^3), `radius` (m, `inf`: a wall),
+/// and `rigid = true` or a `[body.material]` in the keys of `[material]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawBody {
+    mass: Option<f64>,
+    density: Option<f64>,
+    radius: f64,
+    rigid: Option<bool>,
+    material: Option<RawMaterial>,
+}
+
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawImpact {
@@ -84,6 +98,7 @@ struct RawImpact {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawMaterial {
+    rigid: Option<bool>,
     g_inf: Option<f64>,
     g_1: Option<f64>,
     eta: Option<f64>,
@@ -169,8 +184,31 @@ impl Scene {
                 None => Error::Scene(msg),
             }
         })?;
-        let sphere = Sphere::new(raw.sphere.mass, raw.sphere.radius)?;
-        let impact = impact_of(sphere, raw.impact.velocity, &raw.material, base)?;
+        let impact = match (&raw.body, &raw.sphere, &raw.material) {
+            (Some(bodies), None, None) => collision(bodies, raw.impact.velocity, base)?,
+            (Some(_), _, _) => {
+                return Err(scene_error(
+                    "[[body]] cannot be mixed with [sphere] or [material]: a collision gives \
+                     each body its own material ([body.material])"
+                        .into(),
+                ))
+            }
+            (None, Some(sphere), Some(material)) => {
+                let sphere = Sphere::new(sphere.mass, sphere.radius)?;
+                impact_of(sphere, raw.impact.velocity, material, base)?
+            }
+            (None, sphere, _) => {
+                let missing = if sphere.is_none() {
+                    "[sphere]"
+                } else {
+                    "[material]"
+                };
+                return Err(scene_error(format!(
+                    "missing {missing}: give [sphere] and [material] (one sphere on a \
+                     half-space) or two [[body]] tables (a collision)"
+                )));
+            }
+        };
         let mut options = SolveOptions::default();
         if let Some(name) = &raw.solver.name {
             options.solver = name.parse::<SolverKind>().map_err(|_| {
@@ -226,9 +264,101 @@ impl Scene {
     }
 }
 
-/// The impact of a scene: the standard solid of `[material]` (`g_inf`, `g_1`, `eta`, `poisson`
-/// or `k_0`), or the general material of `[material.shear]` and `[material.bulk]`.
+/// The impact of a one-sphere scene: the standard solid of `[material]` (`g_inf`, `g_1`,
+/// `eta`, `poisson` or `k_0`), or the general material of `[material.shear]` and
+/// `[material.bulk]`.
 fn impact_of(sphere: Sphere, velocity: f64, m: &RawMaterial, base: &Path) -> Result<Impact> {
+    match material_of(m, base)? {
+        BodyMaterial::StandardSolid(m) => Impact::new(sphere, velocity, m),
+        BodyMaterial::General(m) => Impact::with_general(sphere, velocity, m),
+        BodyMaterial::Rigid => Err(scene_error(
+            "[material] rigid = true: a rigid half-space under a rigid sphere has no \
+             compliance; only a [[body]] of a collision can be rigid"
+                .into(),
+        )),
+    }
+}
+
+/// The collision of exactly two `[[body]]` tables at the relative normal velocity `velocity`.
+fn collision(bodies: &[RawBody], velocity: f64, base: &Path) -> Result<Impact> {
+    let [a, b] = bodies else {
+        return Err(scene_error(format!(
+            "[[body]]: found {} bod{}; a collision needs exactly two [[body]] tables",
+            bodies.len(),
+            if bodies.len() == 1 { "y" } else { "ies" }
+        )));
+    };
+    let a = body_of(Side::A, a, base)?;
+    let b = body_of(Side::B, b, base)?;
+    Impact::with_bodies(TwoBodies::new(a, b)?, velocity)
+}
+
+/// One `[[body]]`; its errors name the body (`A` is the first table, `B` the second).
+fn body_of(side: Side, raw: &RawBody, base: &Path) -> Result<Body> {
+    let name = match side {
+        Side::A => "[[body]] A (the first)",
+        Side::B => "[[body]] B (the second)",
+    };
+    let named = |e: Error| match e {
+        Error::Scene(m) => Error::Scene(format!("{name}: {m}")),
+        e @ (Error::OutOfRange { .. } | Error::PronyTerm { .. }) => {
+            Error::Scene(format!("{name}: {e}"))
+        }
+        other => other,
+    };
+    let rigid_flag = raw.rigid.or(raw.material.as_ref().and_then(|m| m.rigid));
+    let material = match (rigid_flag, &raw.material) {
+        (Some(false), _) => {
+            return Err(named(scene_error(
+                "rigid = false: leave it out and give [body.material]".into(),
+            )))
+        }
+        (Some(true), Some(m)) if raw.rigid.is_some() || has_material_keys(m) => {
+            return Err(named(scene_error(
+                "rigid = true cannot be combined with material keys (or given twice)".into(),
+            )))
+        }
+        (Some(true), _) => BodyMaterial::Rigid,
+        (None, Some(m)) => material_of(m, base).map_err(named)?,
+        (None, None) => {
+            return Err(named(scene_error(
+                "missing [body.material] (the keys of [material]) or rigid = true".into(),
+            )))
+        }
+    };
+    match (raw.mass, raw.density) {
+        (Some(mass), None) => Body::new(side, mass, raw.radius, material),
+        (None, Some(rho)) => Body::with_density(side, rho, raw.radius, material),
+        (Some(_), Some(_)) => Err(named(scene_error(
+            "give either mass (kg) or density (kg/m^3), not both".into(),
+        ))),
+        (None, None) => Err(named(scene_error(
+            "missing mass (kg, inf for a wall) or density (kg/m^3)".into(),
+        ))),
+    }
+}
+
+/// True when `m` has any key besides `rigid`.
+fn has_material_keys(m: &RawMaterial) -> bool {
+    m.g_inf.is_some()
+        || m.g_1.is_some()
+        || m.eta.is_some()
+        || m.poisson.is_some()
+        || m.k_0.is_some()
+        || m.shear.is_some()
+        || m.bulk.is_some()
+}
+
+/// The material of a `[material]` table: rigid, standard solid or general.
+fn material_of(m: &RawMaterial, base: &Path) -> Result<BodyMaterial> {
+    if let Some(rigid) = m.rigid {
+        if has_material_keys(m) || !rigid {
+            return Err(scene_error(
+                "[material] rigid: give rigid = true alone, or the material keys without it".into(),
+            ));
+        }
+        return Ok(BodyMaterial::Rigid);
+    }
     let standard = [
         ("g_inf", m.g_inf),
         ("g_1", m.g_1),
@@ -260,8 +390,7 @@ fn impact_of(sphere: Sphere, velocity: f64, m: &RawMaterial, base: &Path) -> Res
                  and [material.bulk]"
             )));
         };
-        let material = general_material(shear, bulk, base)?;
-        return Impact::with_general(sphere, velocity, material);
+        return Ok(BodyMaterial::General(general_material(shear, bulk, base)?));
     }
     for (key, value) in [("g_inf", m.g_inf), ("g_1", m.g_1), ("eta", m.eta)] {
         if value.is_none() {
@@ -290,7 +419,7 @@ fn impact_of(sphere: Sphere, velocity: f64, m: &RawMaterial, base: &Path) -> Res
             ))
         }
     };
-    Impact::new(sphere, velocity, material)
+    Ok(BodyMaterial::StandardSolid(material))
 }
 
 fn scene_error(message: String) -> Error {

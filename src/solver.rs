@@ -1,10 +1,11 @@
 //! Solver choice, accuracy request and the top-level [`solve`] that dispatches a validated
 //! [`Impact`] to a solver in canonical units and maps the outcome back to SI.
 
+use crate::bodies::BodyMaterial;
 use crate::error::{Error, Result};
 use crate::fast;
 use crate::impact::{Impact, ImpactMaterial, Outcome};
-use crate::material::{ElementNetwork, GeneralNetwork};
+use crate::material::{ElementNetwork, GeneralNetwork, StackedNetwork};
 use crate::mdr;
 use crate::theory;
 use crate::tolerances;
@@ -146,9 +147,11 @@ impl SolveOptions {
 
 /// Solve an impact. Elastic materials use the Hertz closed form whatever the solver.
 ///
-/// A general material (Prony series in shear and bulk) is solved by `fast` and `reference`
-/// (and `auto`) from its canonical `G_eq` series, and by `mdr` on its element network built from
-/// `G` and `K` ([`GeneralNetwork`], an independent path); `mdr-euler` refuses it
+/// A general material (Prony series in shear and bulk) is solved by `fast` (and `auto`) from its
+/// canonical `G_eq` series of `material::carson`, by `reference` from the same function derived
+/// independently (`theory::poles`), and by `mdr` on its element network built from `G` and `K`
+/// ([`GeneralNetwork`], a third path); two bodies likewise, `mdr` on the two networks in series
+/// ([`StackedNetwork`]); `mdr-euler` refuses them
 /// ([`Error::Unsupported`], [`MDR_EULER_GENERAL_UNSUPPORTED`]): the paper's explicit Euler
 /// network is the standard solid's only.
 ///
@@ -191,6 +194,24 @@ pub fn canonical_material(impact: &Impact) -> Result<mdr::CanonicalMaterial> {
         ImpactMaterial::General(m) => {
             mdr::Network::General(GeneralNetwork::new(m, s.modulus, s.time))
         }
+        ImpactMaterial::TwoBodies(b) => {
+            let net = |m: &crate::bodies::BodyMaterial| {
+                m.general()
+                    .map(|g| GeneralNetwork::new(&g, s.modulus, s.time))
+            };
+            match (b.a().material(), b.b().material()) {
+                // one deformable standard solid: its own network, as for one body
+                (BodyMaterial::StandardSolid(m), BodyMaterial::Rigid)
+                | (BodyMaterial::Rigid, BodyMaterial::StandardSolid(m)) => {
+                    mdr::Network::StandardSolid(ElementNetwork::new(m).scaled(s.modulus, s.time))
+                }
+                (ma, mb) => match (net(ma), net(mb)) {
+                    (Some(na), Some(nb)) => mdr::Network::Stacked(StackedNetwork::new(na, nb)),
+                    (Some(n), None) | (None, Some(n)) => mdr::Network::General(n),
+                    (None, None) => unreachable!("TwoBodies refuses two rigid bodies"),
+                },
+            }
+        }
     };
     Ok(mdr::CanonicalMaterial {
         prony: impact.canonical_relaxation(),
@@ -215,6 +236,14 @@ fn fast_refusal_falls_back(e: &Error) -> bool {
     )
 }
 
+/// The canonical relaxation function of the reference solver: derived by `theory::poles`, not
+/// by the `material::carson` composition that `fast` integrates (the standard solid's closed
+/// form is the same for both).
+fn reference_prony(impact: &Impact) -> Result<crate::material::Prony> {
+    let s = impact.scales();
+    Ok(theory::poles::reference_relaxation(impact)?.scaled(s.modulus, s.time))
+}
+
 fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
     let prony = impact.canonical_relaxation();
     let scheme = match (opts.solver, opts.resolution) {
@@ -223,13 +252,13 @@ fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
         (SolverKind::Reference, _) | (SolverKind::Auto, None) if opts.history => {
             // histories on a uniform grid, forces evaluated from the dense solution
             return theory::reference::impact_sampled(
-                &prony,
+                &reference_prony(impact)?,
                 opts.rtol.max(1e-13),
                 tolerances::HISTORY_SAMPLES,
             );
         }
         (SolverKind::Reference, _) => {
-            return theory::impact(&prony, opts.rtol, false);
+            return theory::impact(&reference_prony(impact)?, opts.rtol, false);
         }
         (SolverKind::Fast, _) => return fast::impact(&prony, opts.rtol, opts.history),
         (SolverKind::Auto, None) => {
@@ -239,7 +268,9 @@ fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
             return match fast::impact(&prony, opts.rtol, opts.history) {
                 Ok(o) => Ok(o),
                 Err(first) if fast_refusal_falls_back(&first) => {
-                    match theory::impact(&prony, opts.rtol, opts.history) {
+                    let reference = reference_prony(impact)
+                        .and_then(|p| theory::impact(&p, opts.rtol, opts.history));
+                    match reference {
                         Ok(mut o) => {
                             o.fallback = Some(first.to_string());
                             Ok(o)

@@ -333,7 +333,7 @@ fn mdr_refuses_general_material() {
     assert_eq!(
         e.to_string(),
         "mdr-euler: the paper's explicit Euler network is the standard solid's only; use mdr, \
-         fast or reference for a general material"
+         fast or reference for a general material or two viscoelastic bodies"
     );
     assert!(matches!(e, Error::Unsupported(_)));
     assert_eq!(
@@ -377,4 +377,56 @@ fn ten_terms_through_auto() {
     assert!(o.cor > 0.0 && o.cor < 1.0);
     let r = solve(&imp, &opts(SolverKind::Reference, 1e-8)).unwrap();
     assert!(rel(o.cor, r.cor) <= 2.0 * rtol, "{} vs {}", o.cor, r.cor);
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig { cases: 64, ..Default::default() })]
+
+    /// Random general materials through the public `solve` (1 to 40 shear terms with times over
+    /// 20 decades, moduli over 6, every bulk form, SI sphere and speed over decades; `auto` and
+    /// `reference` at random rtol): never a panic, and either a CoR in `(0, 1]` with finite
+    /// outputs and an estimate within rtol, or a one-line error.
+    #[test]
+    fn random_general_materials_never_panic(
+        g_inf in 3.0f64..9.0,
+        shear in proptest::collection::vec((3.0f64..9.0, -12.0f64..8.0), 1..=40),
+        kind in 0u8..4,
+        bulk_scale in 4.0f64..11.0,
+        nu in -0.9f64..0.5,
+        bulk in proptest::collection::vec((3.0f64..9.0, -10.0f64..6.0), 1..=5),
+        lv in -3.0f64..2.0,
+        lrtol in -10.0f64..-3.0,
+        reference in proptest::bool::ANY,
+    ) {
+        let p = |v: &[(f64, f64)]| -> Vec<(f64, f64)> {
+            v.iter().map(|&(m, t)| (10f64.powf(m), 10f64.powf(t))).collect()
+        };
+        let shear = ShearProny::new(10f64.powf(g_inf), &p(&shear)).unwrap();
+        let bulk = match kind {
+            0 => BulkRheology::Incompressible,
+            1 => BulkRheology::Elastic(10f64.powf(bulk_scale)),
+            2 => BulkRheology::Poisson(nu),
+            _ => BulkRheology::Prony(
+                mdr_impact::material::BulkProny::new(10f64.powf(bulk_scale), &p(&bulk)).unwrap(),
+            ),
+        };
+        let m = GeneralMaterial::new(shear, bulk).unwrap();
+        let imp = Impact::with_general(Sphere::new(4.11e-3, 5e-3).unwrap(), 10f64.powf(lv), m)
+            .unwrap();
+        let rtol = 10f64.powf(lrtol);
+        let solver = if reference { SolverKind::Reference } else { SolverKind::Auto };
+        match solve(&imp, &opts(solver, rtol)) {
+            Ok(o) => {
+                proptest::prop_assert!(o.cor > 0.0 && o.cor <= 1.0, "CoR {}", o.cor);
+                proptest::prop_assert!(o.contact_time.is_finite() && o.max_force.is_finite());
+                if let Some(est) = o.cor_error_estimate {
+                    proptest::prop_assert!(est <= rtol, "estimate {est:e} > rtol {rtol:e}");
+                }
+            }
+            Err(e) => {
+                let msg = e.to_string();
+                proptest::prop_assert!(!msg.contains('\n') && !msg.is_empty(), "{msg:?}");
+            }
+        }
+    }
 }

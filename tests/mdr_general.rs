@@ -154,8 +154,7 @@ fn mdr_euler_refuses_general() {
         assert!(matches!(e, Error::Unsupported(_)));
         assert_eq!(
             e.to_string(),
-            "mdr-euler: the paper's explicit Euler network is the standard solid's only; use \
-             mdr, fast or reference for a general material"
+            mdr_impact::solver::MDR_EULER_GENERAL_UNSUPPORTED
         );
         assert!(!e.to_string().contains('\n'));
     }

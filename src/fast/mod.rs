@@ -152,6 +152,7 @@ mod driver;
 mod kernel;
 mod linalg;
 mod newton;
+mod reduce;
 mod restitution;
 mod ting;
 
@@ -350,6 +351,25 @@ impl<const K: usize> Solver<K> {
 /// [`Error::NoConvergence`] / [`Error::WorkLimit`] when every solve stopped on a bounded
 /// iteration.
 pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
+    let (c_inf, live) = prepare(prony, rtol)?;
+    // terms far outside the contact window are merged into their limit forms when the bound
+    // of the merge stays within a share of rtol (module `reduce`)
+    if live.len() > 2 {
+        return reduce::solve(c_inf, &live, rtol, |c, l, r| dispatch(c, l, r, history));
+    }
+    dispatch(c_inf, &live, rtol, history)
+}
+
+/// [`impact`] without merging the terms outside the contact window (module `reduce`): every
+/// term is integrated. For checks of the reduction and for benchmarks.
+pub fn impact_unreduced(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
+    let (c_inf, live) = prepare(prony, rtol)?;
+    dispatch(c_inf, &live, rtol, history)
+}
+
+/// Validate `rtol` and `prony`; the relaxed modulus and the live terms `(c_k, tau_k)` (zero
+/// terms dropped, infinite times added to the relaxed modulus, equal times merged).
+fn prepare(prony: &Prony, rtol: f64) -> Result<(f64, Vec<(f64, f64)>)> {
     if !(tolerances::MIN_RTOL..=tolerances::MAX_RTOL).contains(&rtol) {
         return Err(Error::OutOfRange {
             field: "rtol",
@@ -408,14 +428,19 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
             allowed: "at most FAST_MAX_TERMS = 128 terms",
         });
     }
+    Ok((c_inf, live))
+}
+
+/// [`impact`] on the validated, merged terms `live`.
+fn dispatch(c_inf: f64, live: &[(f64, f64)], rtol: f64, history: bool) -> Result<Outcome> {
     // the per-term state lives in arrays of the smallest capacity class that holds the live
     // terms (module docs, "Term state"): every loop runs over the live terms only
     match live.len() {
         0 => Ok(hertz(c_inf, history)),
-        1..=2 => solve_terms::<2>(c_inf, &live, rtol, history),
-        3..=8 => solve_terms::<8>(c_inf, &live, rtol, history),
-        9..=32 => solve_terms::<32>(c_inf, &live, rtol, history),
-        _ => solve_terms::<FAST_MAX_TERMS>(c_inf, &live, rtol, history),
+        1..=2 => solve_terms::<2>(c_inf, live, rtol, history),
+        3..=8 => solve_terms::<8>(c_inf, live, rtol, history),
+        9..=32 => solve_terms::<32>(c_inf, live, rtol, history),
+        _ => solve_terms::<FAST_MAX_TERMS>(c_inf, live, rtol, history),
     }
 }
 

@@ -23,7 +23,7 @@ pub mod network;
 pub mod rheology;
 pub mod table;
 
-pub use network::GeneralNetwork;
+pub use network::{ElementModel, GeneralNetwork, StackedNetwork};
 pub use rheology::{BulkProny, BulkRheology, GeneralMaterial, ShearProny};
 
 /// Bulk behaviour: an elastic modulus `K_0` (Pa) or incompressible.

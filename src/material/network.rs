@@ -303,6 +303,134 @@ impl GeneralNetwork {
     }
 }
 
+/// The step interface of an MDR element built from rheologies (not from `G_eq`): one body's
+/// [`GeneralNetwork`] or two bodies' networks in series ([`StackedNetwork`]). Every map is
+/// linear in `(u, state)`, so a foundation may apply them to sums of element states.
+pub trait ElementModel: Clone {
+    /// Step factors for one step size.
+    type Factors: Clone;
+    /// Length of one element's state vector.
+    fn state_len(&self) -> usize;
+    /// Step factors for the step size `dt >= 0`.
+    fn factors(&self, dt: f64) -> Self::Factors;
+    /// The step size the factors were made for.
+    fn step(f: &Self::Factors) -> f64;
+    /// Force (per unit `4 dx`) of a state.
+    fn force(&self, state: &[f64]) -> f64;
+    /// End-of-step force `a + b du` as an affine function of the increment `du` of the outer
+    /// displacement, from the start `u` and `state`.
+    fn end_force(&self, f: &Self::Factors, u: f64, state: &[f64]) -> (f64, f64);
+    /// Advance one element's state over a step from `u` by `du`.
+    fn advance(&self, f: &Self::Factors, u: f64, du: f64, state: &mut [f64]);
+    /// End force per unit `u` of an element at rest loaded linearly to `u` over the duration
+    /// `s > 0`, and its derivative in `s`.
+    fn entry_stiffness(&self, s: f64) -> (f64, f64);
+}
+
+impl ElementModel for GeneralNetwork {
+    type Factors = StepFactors;
+    fn state_len(&self) -> usize {
+        GeneralNetwork::state_len(self)
+    }
+    fn factors(&self, dt: f64) -> StepFactors {
+        GeneralNetwork::factors(self, dt)
+    }
+    fn step(f: &StepFactors) -> f64 {
+        f.dt
+    }
+    fn force(&self, state: &[f64]) -> f64 {
+        GeneralNetwork::force(self, state)
+    }
+    fn end_force(&self, f: &StepFactors, u: f64, state: &[f64]) -> (f64, f64) {
+        GeneralNetwork::end_force(self, f, u, state)
+    }
+    fn advance(&self, f: &StepFactors, u: f64, du: f64, state: &mut [f64]) {
+        GeneralNetwork::advance(self, f, u, du, state)
+    }
+    fn entry_stiffness(&self, s: f64) -> (f64, f64) {
+        GeneralNetwork::entry_stiffness(self, s)
+    }
+}
+
+/// Two bodies' element networks in series (theory notes §8): the MDR foundation of a collision
+/// of two viscoelastic bodies, whose compliances add (`1/G_tot = 1/G_eq,A + 1/G_eq,B` in Carson
+/// form) without ever forming `G_tot`.
+///
+/// State `[u_a, A's state.., B's state..]`: `u_a` is the part of the element's displacement
+/// taken by body A (B takes `u - u_a`). Over a step both networks' end forces are affine in
+/// their own increments, `a_A + b_A du_a` and `a_B + b_B du_b`; equal forces with
+/// `du_a + du_b = du` give, in closed form,
+///
+/// ```text
+/// du_a = (a_B - a_A + b_B du) / (b_A + b_B),   F_end = (b_B a_A + b_A a_B)/(b_A + b_B) + b_A b_B/(b_A + b_B) du
+/// ```
+///
+/// the same construction as the series condition inside each network, so the scheme keeps its
+/// order and unconditional stability.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StackedNetwork {
+    a: GeneralNetwork,
+    b: GeneralNetwork,
+}
+
+impl StackedNetwork {
+    /// Body A's network in series with body B's (both in the same units).
+    pub fn new(a: GeneralNetwork, b: GeneralNetwork) -> Self {
+        Self { a, b }
+    }
+
+    fn split<'s>(&self, state: &'s [f64]) -> (f64, &'s [f64], &'s [f64]) {
+        let la = self.a.state_len();
+        (state[0], &state[1..1 + la], &state[1 + la..])
+    }
+
+    /// `(a_A, b_A, a_B, b_B)`: both bodies' affine end forces in their own increments.
+    fn parts(&self, f: &(StepFactors, StepFactors), u: f64, state: &[f64]) -> [f64; 4] {
+        let (ua, sa, sb) = self.split(state);
+        let (aa, ba) = self.a.end_force(&f.0, ua, sa);
+        let (ab, bb) = self.b.end_force(&f.1, u - ua, sb);
+        [aa, ba, ab, bb]
+    }
+}
+
+impl ElementModel for StackedNetwork {
+    type Factors = (StepFactors, StepFactors);
+    fn state_len(&self) -> usize {
+        1 + self.a.state_len() + self.b.state_len()
+    }
+    fn factors(&self, dt: f64) -> Self::Factors {
+        (self.a.factors(dt), self.b.factors(dt))
+    }
+    fn step(f: &Self::Factors) -> f64 {
+        f.0.dt
+    }
+    fn force(&self, state: &[f64]) -> f64 {
+        let (_, sa, _) = self.split(state);
+        self.a.force(sa)
+    }
+    fn end_force(&self, f: &Self::Factors, u: f64, state: &[f64]) -> (f64, f64) {
+        let [aa, ba, ab, bb] = self.parts(f, u, state);
+        let b = ba + bb;
+        ((bb * aa + ba * ab) / b, ba * bb / b)
+    }
+    fn advance(&self, f: &Self::Factors, u: f64, du: f64, state: &mut [f64]) {
+        let [aa, ba, ab, bb] = self.parts(f, u, state);
+        let du_a = (ab - aa + bb * du) / (ba + bb);
+        let ua = state[0];
+        let la = self.a.state_len();
+        let (head, sb) = state.split_at_mut(1 + la);
+        self.a.advance(&f.0, ua, du_a, &mut head[1..]);
+        self.b.advance(&f.1, u - ua, du - du_a, sb);
+        head[0] = ua + du_a;
+    }
+    fn entry_stiffness(&self, s: f64) -> (f64, f64) {
+        let (qa, dqa) = self.a.entry_stiffness(s);
+        let (qb, dqb) = self.b.entry_stiffness(s);
+        let q = qa + qb;
+        (qa * qb / q, (dqa * qb * qb + dqb * qa * qa) / (q * q))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

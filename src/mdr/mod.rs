@@ -23,7 +23,7 @@ pub(crate) mod network;
 
 use crate::error::{Error, Result};
 use crate::impact::{History, Outcome, Work};
-use crate::material::{ElementNetwork, GeneralNetwork, Prony};
+use crate::material::{ElementModel, ElementNetwork, GeneralNetwork, Prony, StackedNetwork};
 use crate::tolerances;
 use euler::EulerFoundation;
 use exponential::ExpFoundation;
@@ -117,11 +117,15 @@ pub enum Network {
     /// A general material's network built from `G` and `K` ([`GeneralNetwork`]), which
     /// [`Scheme::Exponential`] integrates; [`Scheme::Euler`] refuses it.
     General(GeneralNetwork),
+    /// Two colliding bodies' networks in series ([`StackedNetwork`], theory notes §8), never
+    /// combined into `G_tot`; [`Scheme::Exponential`] integrates it, [`Scheme::Euler`] refuses it.
+    Stacked(StackedNetwork),
 }
 
 /// The one-line refusal of [`Scheme::Euler`] for a general material.
 pub const EULER_GENERAL_UNSUPPORTED: &str = "mdr-euler: the paper's explicit Euler network is \
-     the standard solid's only; use mdr, fast or reference for a general material";
+     the standard solid's only; use mdr, fast or reference for a general material or two \
+     viscoelastic bodies";
 
 /// The step interface of the exponential scheme's foundations: the standard solid's through
 /// `G_eq` ([`ExpFoundation`]) and the general network ([`NetFoundation`]).
@@ -327,8 +331,8 @@ pub fn run_exponential(
 
 /// Run one impact with the exponential scheme on the element network of a general material
 /// (built from `G` and `K`, not from `G_eq`) on a fixed grid (canonical units).
-pub fn run_network(
-    network: &GeneralNetwork,
+pub fn run_network<N: ElementModel>(
+    network: &N,
     grid: &Grid,
     capacity: usize,
     history: bool,
@@ -614,6 +618,9 @@ pub fn pilot_material(material: &CanonicalMaterial) -> Result<Layout> {
         Network::General(net) => pilot_with(net.entry_stiffness(0.0).0, |grid, capacity| {
             run_network(net, grid, capacity, false)
         }),
+        Network::Stacked(net) => pilot_with(net.entry_stiffness(0.0).0, |grid, capacity| {
+            run_network(net, grid, capacity, false)
+        }),
         Network::StandardSolid(_) => pilot(&material.prony),
     }
 }
@@ -684,10 +691,11 @@ pub fn run_resolution(
     let capacity = capacity_for(grid.dx, layout.contact_radius);
     match (scheme, &material.network) {
         (Scheme::Exponential, Network::General(net)) => run_network(net, &grid, capacity, history),
+        (Scheme::Exponential, Network::Stacked(net)) => run_network(net, &grid, capacity, history),
         (Scheme::Exponential, Network::StandardSolid(_)) => {
             run_exponential(&material.prony, &grid, capacity, history)
         }
-        (Scheme::Euler, Network::General(_)) => {
+        (Scheme::Euler, Network::General(_) | Network::Stacked(_)) => {
             Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string()))
         }
         (Scheme::Euler, Network::StandardSolid(_)) => {
@@ -752,7 +760,8 @@ pub fn solve_rtol(
     history: bool,
     work_limit: u64,
 ) -> Result<Outcome> {
-    if let (Scheme::Euler, Network::General(_)) = (scheme, &material.network) {
+    if let (Scheme::Euler, Network::General(_) | Network::Stacked(_)) = (scheme, &material.network)
+    {
         return Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string()));
     }
     let layout = pilot_material(material)?;

@@ -10,16 +10,15 @@
 
 use super::exponential::Affine;
 use super::{Foundation, Stepper};
-use crate::material::network::StepFactors;
-use crate::material::GeneralNetwork;
+use crate::material::ElementModel;
 
 /// Element states of the general network.
 #[derive(Debug, Clone)]
-pub(crate) struct NetFoundation {
+pub(crate) struct NetFoundation<N: ElementModel> {
     geom: Foundation,
-    net: GeneralNetwork,
+    net: N,
     /// Factors for the current step size.
-    factors: StepFactors,
+    factors: N::Factors,
     /// States `[u2, q.., s.., p..]`, element-major with stride `len`.
     state: Vec<f64>,
     len: usize,
@@ -33,8 +32,8 @@ pub(crate) struct NetFoundation {
     max_elements: usize,
 }
 
-impl NetFoundation {
-    pub(crate) fn new(geom: Foundation, net: GeneralNetwork) -> Self {
+impl<N: ElementModel> NetFoundation<N> {
+    pub(crate) fn new(geom: Foundation, net: N) -> Self {
         let len = net.state_len();
         Self {
             geom,
@@ -56,9 +55,9 @@ impl NetFoundation {
     }
 }
 
-impl Stepper for NetFoundation {
+impl<N: ElementModel> Stepper for NetFoundation<N> {
     fn set_step(&mut self, dt: f64) {
-        if dt != self.factors.dt {
+        if dt != N::step(&self.factors) {
             self.factors = self.net.factors(dt);
         }
     }
@@ -75,7 +74,7 @@ impl Stepper for NetFoundation {
             .end_force(&self.factors, n * d - self.sum_g, &self.sum);
         Affine {
             a: w * a,
-            b: w * b * self.factors.dt * n,
+            b: w * b * N::step(&self.factors) * n,
         }
     }
 
@@ -83,7 +82,7 @@ impl Stepper for NetFoundation {
         if !(r > 0.0) {
             return (0.0, 0.0);
         }
-        let dt = self.factors.dt;
+        let dt = N::step(&self.factors);
         let d1 = d + r * dt;
         let (mut f, mut df) = (0.0, 0.0);
         let mut i = self.n;
@@ -110,7 +109,7 @@ impl Stepper for NetFoundation {
         }
         let g = self.geom.g(self.n - 1);
         let (a, b) = self.net.end_force(&self.factors, d - g, self.outer());
-        Some(a + b * r * self.factors.dt)
+        Some(a + b * r * N::step(&self.factors))
     }
 
     fn outer_force_start(&self, _d: f64) -> f64 {
@@ -123,7 +122,7 @@ impl Stepper for NetFoundation {
         let w = self.geom.weight();
         Affine {
             a: w * a,
-            b: w * b * self.factors.dt,
+            b: w * b * N::step(&self.factors),
         }
     }
 
@@ -138,7 +137,7 @@ impl Stepper for NetFoundation {
 
     fn commit(&mut self, d: f64, r: f64, admit: bool) {
         let len = self.len;
-        let du = r * self.factors.dt;
+        let du = r * N::step(&self.factors);
         for s in self.sum.iter_mut() {
             *s = 0.0;
         }

@@ -14,7 +14,10 @@
 //!   collocation (not an element foundation);
 //! - [`files`]: the reference force histories written to `reference/`;
 //! - [`bromwich`]: `G_eq(t)` of a general material by Talbot inversion of the Carson formula, a
-//!   route independent of the pole computation in `material::carson`.
+//!   route independent of the pole computation in `material::carson`;
+//! - [`poles`]: `G_eq(t)` and two bodies' `G_tot(t)` as exact Prony series from relaxation times
+//!   found as roots in the time domain, the series the reference solver integrates (no code
+//!   shared with `material::carson`, which `fast` uses).
 //!
 //! Every tolerance used by this module is a named constant below.
 
@@ -22,6 +25,7 @@ pub mod asymptotes;
 pub mod bromwich;
 pub mod files;
 pub mod hertz;
+pub mod poles;
 pub mod quad;
 pub mod reference;
 pub mod roots;
