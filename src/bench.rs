@@ -1063,6 +1063,46 @@ pub fn general_timing(budget: f64) -> Result<Vec<GeneralTiming>> {
         .collect()
 }
 
+/// `mdr-euler` against `fast` on the 3-term general material of the catalogue
+/// (`prony-3-elastic-bulk`), both asked for rtol 1e-4 (one core, CoR only, medians within
+/// `budget` seconds each): `(euler seconds, euler error, fast seconds, fast error)`, errors
+/// relative to `reference` at rtol 1e-10.
+pub fn general_euler_speedup(budget: f64) -> Result<(f64, f64, f64, f64)> {
+    let case = &crate::catalogue::GENERAL[0];
+    let imp = case.impact()?;
+    let opts = |solver, rtol| SolveOptions {
+        solver,
+        rtol,
+        ..Default::default()
+    };
+    let truth = solve(&imp, &opts(SolverKind::Reference, 1e-10))?.cor;
+    let run = |solver| -> Result<(f64, f64)> {
+        let o = opts(solver, 1e-4);
+        let e = ((solve(&imp, &o)?.cor - truth) / truth).abs();
+        let (t, _) = median_time(budget, || solve(&imp, &o).map(|_| ()))?;
+        Ok((t, e))
+    };
+    let (te, ee) = run(SolverKind::MdrEuler)?;
+    let (tf, ef) = run(SolverKind::Fast)?;
+    Ok((te, ee, tf, ef))
+}
+
+/// One markdown paragraph of [`general_euler_speedup`].
+pub fn general_euler_text((te, ee, tf, ef): (f64, f64, f64, f64)) -> String {
+    format!(
+        "`mdr-euler` (the paper's explicit Euler, on the general element network) against `fast` on the \
+         3-term material `prony-3-elastic-bulk` (6 `G_eq` terms), both at rtol 1e-4: `mdr-euler` {} \
+         (CoR error {:.1e}), `fast` {} (CoR error {:.1e}): ratio {:.0}x (target at least {:.0}x: {}).\n",
+        fmt_time(te),
+        ee,
+        fmt_time(tf),
+        ef,
+        te / tf,
+        TARGET_SPEEDUP,
+        if te / tf >= TARGET_SPEEDUP { "met" } else { "**not met**" }
+    )
+}
+
 /// Markdown table of [`general_timing`], each case beside the standard solid of the random
 /// sample in the same CoR group (`random`: the rows of [`TimedRows::Random`], if timed), with
 /// the ratio of the median times.

@@ -495,6 +495,13 @@ fn run(cli: Cli) -> Result<(), Error> {
                 println!("{}", bench::general_timing_table(&g, random));
                 g
             };
+            let euler_general = if quick {
+                None
+            } else {
+                let r = bench::general_euler_speedup(budget)?;
+                print!("{}", bench::general_euler_text(r));
+                Some(r)
+            };
             let batch = if batch_rows > 0 {
                 let rows = batch::random_rows(batch_rows, 1)?;
                 let t0 = std::time::Instant::now();
@@ -521,7 +528,12 @@ fn run(cli: Cli) -> Result<(), Error> {
             if !quick {
                 let existing =
                     std::fs::read_to_string(&report).map_err(|e| Error::io(&report, e))?;
-                let section = bench::summary(&points, &bench::machine(), batch, &timed, &general);
+                let mut section =
+                    bench::summary(&points, &bench::machine(), batch, &timed, &general);
+                if let Some(r) = euler_general {
+                    section.push('\n');
+                    section.push_str(&bench::general_euler_text(r));
+                }
                 let text = validate::replace_performance(&existing, &section)?;
                 output::write_atomic(&report, |w| {
                     w.write_all(text.as_bytes())

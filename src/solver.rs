@@ -151,9 +151,9 @@ impl SolveOptions {
 /// canonical `G_eq` series of `material::carson`, by `reference` from the same function derived
 /// independently (`theory::poles`), and by `mdr` on its element network built from `G` and `K`
 /// ([`GeneralNetwork`], a third path); two bodies likewise, `mdr` on the two networks in series
-/// ([`StackedNetwork`]); `mdr-euler` refuses them
-/// ([`Error::Unsupported`], [`MDR_EULER_GENERAL_UNSUPPORTED`]): the paper's explicit Euler
-/// network is the standard solid's only.
+/// ([`StackedNetwork`]). `mdr-euler` runs the paper's explicit Euler on one body's network
+/// (the standard solid's of Eq. 8 or a general material's) and refuses two viscoelastic bodies
+/// ([`Error::Unsupported`], [`MDR_EULER_GENERAL_UNSUPPORTED`]).
 ///
 /// In nearly elastic cases a solver's discretisation error can push the CoR above 1; since
 /// `e <= 1` holds exactly (a passive material dissipates a non-negative energy), such a value is
@@ -180,7 +180,7 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
     Ok(canonical.to_si(impact))
 }
 
-/// The one-line refusal of `mdr-euler` for a general material.
+/// The one-line refusal of `mdr-euler` for two viscoelastic bodies.
 pub const MDR_EULER_GENERAL_UNSUPPORTED: &str = mdr::EULER_GENERAL_UNSUPPORTED;
 
 /// The impact's material in canonical units, in the forms the MDR schemes need: the standard
@@ -285,11 +285,6 @@ fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
             };
         }
     };
-    if scheme == mdr::Scheme::Euler && impact.general_material().is_some() {
-        return Err(Error::Unsupported(
-            MDR_EULER_GENERAL_UNSUPPORTED.to_string(),
-        ));
-    }
     let material = canonical_material(impact)?;
     match opts.resolution {
         Some(r) => {

@@ -324,18 +324,18 @@ fn general_impact(terms: &[(f64, f64)], bulk: BulkRheology) -> Impact {
     Impact::with_general(Sphere::new(4.11e-3, 5.0e-3).unwrap(), 0.99, m).unwrap()
 }
 
-/// `mdr-euler` refuses a general material with one line (the paper's explicit Euler network is
-/// the standard solid's); `mdr` answers it on the general element network (tests/mdr_general.rs).
+/// `mdr-euler` runs the paper's explicit Euler on a general material's network and `mdr` on
+/// the same network with its exponential scheme (tests/mdr_general.rs); an explicit resolution
+/// means `mdr` for `auto` too.
 #[test]
-fn mdr_refuses_general_material() {
+fn mdr_schemes_take_general_material() {
     let imp = general_impact(&[(1.0e7, 5.0e-5)], BulkRheology::Poisson(0.49));
-    let e = solve(&imp, &opts(SolverKind::MdrEuler, 1e-4)).unwrap_err();
     assert_eq!(
-        e.to_string(),
-        "mdr-euler: the paper's explicit Euler network is the standard solid's only; use mdr, \
-         fast or reference for a general material or two viscoelastic bodies"
+        solve(&imp, &opts(SolverKind::MdrEuler, 1e-3))
+            .unwrap()
+            .solver,
+        "mdr-euler"
     );
-    assert!(matches!(e, Error::Unsupported(_)));
     assert_eq!(
         solve(&imp, &opts(SolverKind::Mdr, 1e-4)).unwrap().solver,
         "mdr"

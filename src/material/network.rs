@@ -303,6 +303,67 @@ impl GeneralNetwork {
     }
 }
 
+impl GeneralNetwork {
+    /// Length of one element's state for the paper's explicit Euler scheme: the dashpot
+    /// positions `[w_i (shear branch), z_i (the shear terms / 3 of the bulk branch), v_j (bulk
+    /// terms)]` (`z`, `v` only when compressible).
+    pub fn dashpot_len(&self) -> usize {
+        let (_, k, _) = self.bulk_terms();
+        if self.is_incompressible() {
+            self.g.len()
+        } else {
+            2 * self.g.len() + k.len()
+        }
+    }
+
+    /// Force (per unit `4 dx`) for the outer displacement `u` and the dashpot positions `w`
+    /// ([`GeneralNetwork::dashpot_len`]), with their time derivatives written to `rates`: the
+    /// generalisation of the paper's Eq. (8). The inner node `u2` follows from the series
+    /// condition (shear branch force = bulk branch force), linear in `u2`:
+    ///
+    /// ```text
+    /// A = g_inf + sum g_i,   B = k_inf + g_inf/3 + sum g_i/3 + sum k_j,
+    /// u2 = (B u + sum g_i w_i - sum (g_i/3) z_i - sum k_j v_j) / (A + B),
+    /// F = A u2 - sum g_i w_i,
+    /// w_i' = (u2 - w_i)/tau_i,  z_i' = (u - u2 - z_i)/tau_i,  v_j' = (u - u2 - v_j)/theta_j
+    /// ```
+    ///
+    /// (incompressible: `u2 = u`).
+    pub fn dashpots(&self, u: f64, w: &[f64], rates: &mut [f64]) -> f64 {
+        let n = self.g.len();
+        let a = self.g_inf + self.g.iter().sum::<f64>();
+        let sum_gw: f64 = self.g.iter().zip(&w[..n]).map(|(g, w)| g * w).sum();
+        let u2 = if self.is_incompressible() {
+            u
+        } else {
+            let (k_inf, k, _) = self.bulk_terms();
+            let b = k_inf + self.g_inf / 3.0 + (a - self.g_inf) / 3.0 + k.iter().sum::<f64>();
+            let sum_gz: f64 = self
+                .g
+                .iter()
+                .zip(&w[n..2 * n])
+                .map(|(g, z)| g / 3.0 * z)
+                .sum();
+            let sum_kv: f64 = k.iter().zip(&w[2 * n..]).map(|(k, v)| k * v).sum();
+            (b * u + sum_gw - sum_gz - sum_kv) / (a + b)
+        };
+        for i in 0..n {
+            rates[i] = (u2 - w[i]) / self.tau[i];
+        }
+        if !self.is_incompressible() {
+            let (_, _, theta) = self.bulk_terms();
+            let e = u - u2;
+            for i in 0..n {
+                rates[n + i] = (e - w[n + i]) / self.tau[i];
+            }
+            for (j, t) in theta.iter().enumerate() {
+                rates[2 * n + j] = (e - w[2 * n + j]) / t;
+            }
+        }
+        a * u2 - sum_gw
+    }
+}
+
 /// The step interface of an MDR element built from rheologies (not from `G_eq`): one body's
 /// [`GeneralNetwork`] or two bodies' networks in series ([`StackedNetwork`]). Every map is
 /// linear in `(u, state)`, so a foundation may apply them to sums of element states.

@@ -11,31 +11,69 @@
 //! `dt < 2 / sqrt(8 G_eq(0) a_max / m)`.
 
 use super::Foundation;
-use crate::material::ElementNetwork;
+use crate::material::{ElementNetwork, GeneralNetwork};
+
+/// An element network as the explicit Euler scheme sees it: dashpot positions as the state,
+/// the force and the dashpot rates from the current state (the algebraic line solved for the
+/// inner node).
+pub(crate) trait Dashpots {
+    /// Dashpot positions per element.
+    fn len(&self) -> usize;
+    /// Force (per unit `4 dx`) at the outer displacement `u`, and the rates of `w`.
+    fn force_rates(&self, u: f64, w: &[f64], rates: &mut [f64]) -> f64;
+}
+
+impl Dashpots for ElementNetwork {
+    fn len(&self) -> usize {
+        2
+    }
+    fn force_rates(&self, u: f64, w: &[f64], rates: &mut [f64]) -> f64 {
+        let (r1, r3) = self.rates(u, w[0], w[1]);
+        rates[0] = r1;
+        rates[1] = r3;
+        self.force(u, w[0], w[1])
+    }
+}
+
+impl Dashpots for GeneralNetwork {
+    fn len(&self) -> usize {
+        self.dashpot_len()
+    }
+    fn force_rates(&self, u: f64, w: &[f64], rates: &mut [f64]) -> f64 {
+        self.dashpots(u, w, rates)
+    }
+}
 
 #[derive(Debug, Clone)]
-pub(crate) struct EulerFoundation {
+pub(crate) struct EulerFoundation<N: Dashpots> {
     geom: Foundation,
-    net: ElementNetwork,
-    /// Dashpot positions `(w1, w3)` of the elements in contact.
-    w: Vec<(f64, f64)>,
+    net: N,
+    /// Dashpot positions of the elements in contact, element-major with stride `len`.
+    w: Vec<f64>,
+    len: usize,
+    n: usize,
+    rates: Vec<f64>,
     pub(crate) element_updates: u64,
     pub(crate) max_elements: usize,
 }
 
-impl EulerFoundation {
-    pub(crate) fn new(geom: Foundation, net: ElementNetwork) -> Self {
+impl<N: Dashpots> EulerFoundation<N> {
+    pub(crate) fn new(geom: Foundation, net: N) -> Self {
+        let len = net.len();
         Self {
             geom,
             net,
             w: Vec::new(),
+            len,
+            n: 0,
+            rates: vec![0.0; len],
             element_updates: 0,
             max_elements: 0,
         }
     }
 
     pub(crate) fn in_contact(&self) -> usize {
-        self.w.len()
+        self.n
     }
 
     pub(crate) fn geometry(&self) -> &Foundation {
@@ -46,45 +84,50 @@ impl EulerFoundation {
     /// states over `dt` (uses the states *before* the update, as explicit Euler does).
     pub(crate) fn force_and_advance(&mut self, d: f64, dt: f64) -> f64 {
         let mut f = 0.0;
-        for (i, w) in self.w.iter_mut().enumerate() {
+        let len = self.len;
+        for i in 0..self.n {
             let u = d - self.geom.g(i);
-            let (w1, w3) = *w;
-            f += self.net.force(u, w1, w3);
-            let (r1, r3) = self.net.rates(u, w1, w3);
-            *w = (w1 + dt * r1, w3 + dt * r3);
+            let w = &mut self.w[i * len..(i + 1) * len];
+            f += self.net.force_rates(u, w, &mut self.rates);
+            for (x, r) in w.iter_mut().zip(&self.rates) {
+                *x += dt * r;
+            }
         }
-        self.element_updates += self.w.len() as u64;
+        self.element_updates += self.n as u64;
         f * self.geom.weight()
     }
 
     /// Total force at depth `d` without advancing.
-    pub(crate) fn force(&self, d: f64) -> f64 {
-        let f: f64 = self
-            .w
-            .iter()
-            .enumerate()
-            .map(|(i, &(w1, w3))| self.net.force(d - self.geom.g(i), w1, w3))
-            .sum();
+    pub(crate) fn force(&mut self, d: f64) -> f64 {
+        let len = self.len;
+        let mut f = 0.0;
+        for i in 0..self.n {
+            let w = &self.w[i * len..(i + 1) * len];
+            f += self.net.force_rates(d - self.geom.g(i), w, &mut self.rates);
+        }
         f * self.geom.weight()
     }
 
     /// Admit the elements with `g_i < d` (they enter at rest: `w = 0`).
     pub(crate) fn admit(&mut self, d: f64) {
-        while self.w.len() < self.geom.capacity() && self.geom.g(self.w.len()) < d {
-            self.w.push((0.0, 0.0));
+        while self.n < self.geom.capacity() && self.geom.g(self.n) < d {
+            self.w.extend(std::iter::repeat_n(0.0, self.len));
+            self.n += 1;
         }
-        self.max_elements = self.max_elements.max(self.w.len());
+        self.max_elements = self.max_elements.max(self.n);
     }
 
-    /// Force (per `8 dx`) of the outermost element at depth `d`.
-    pub(crate) fn outer_force(&self, d: f64) -> Option<f64> {
-        let i = self.w.len().checked_sub(1)?;
-        let (w1, w3) = self.w[i];
-        Some(self.net.force(d - self.geom.g(i), w1, w3))
+    /// Force (per `4 dx`) of the outermost element at depth `d`.
+    pub(crate) fn outer_force(&mut self, d: f64) -> Option<f64> {
+        let i = self.n.checked_sub(1)?;
+        let len = self.len;
+        let w = &self.w[i * len..(i + 1) * len];
+        Some(self.net.force_rates(d - self.geom.g(i), w, &mut self.rates))
     }
 
     /// Drop the outermost element.
     pub(crate) fn pop(&mut self) {
-        self.w.pop();
+        self.n -= 1;
+        self.w.truncate(self.n * self.len);
     }
 }

@@ -114,18 +114,17 @@ pub enum Network {
     /// standard solid through its closed-form `G_eq` ([`CanonicalMaterial::prony`]) and
     /// [`Scheme::Euler`] through this network.
     StandardSolid(ElementNetwork),
-    /// A general material's network built from `G` and `K` ([`GeneralNetwork`]), which
-    /// [`Scheme::Exponential`] integrates; [`Scheme::Euler`] refuses it.
+    /// A general material's network built from `G` and `K` ([`GeneralNetwork`]), which both
+    /// schemes integrate ([`Scheme::Euler`] on its dashpot positions).
     General(GeneralNetwork),
     /// Two colliding bodies' networks in series ([`StackedNetwork`], theory notes §8), never
     /// combined into `G_tot`; [`Scheme::Exponential`] integrates it, [`Scheme::Euler`] refuses it.
     Stacked(StackedNetwork),
 }
 
-/// The one-line refusal of [`Scheme::Euler`] for a general material.
-pub const EULER_GENERAL_UNSUPPORTED: &str = "mdr-euler: the paper's explicit Euler network is \
-     the standard solid's only; use mdr, fast or reference for a general material or two \
-     viscoelastic bodies";
+/// The one-line refusal of [`Scheme::Euler`] for two viscoelastic bodies.
+pub const EULER_GENERAL_UNSUPPORTED: &str = "mdr-euler: the paper's explicit Euler runs on one \
+     body's element network; use mdr, fast or reference for two viscoelastic bodies";
 
 /// The step interface of the exponential scheme's foundations: the standard solid's through
 /// `G_eq` ([`ExpFoundation`]) and the general network ([`NetFoundation`]).
@@ -484,18 +483,36 @@ fn solve_with_entering<F: Stepper>(
     })
 }
 
-/// Run one impact with the paper's explicit Euler on a fixed grid (canonical units).
+/// Run one impact with the paper's explicit Euler on a fixed grid (canonical units): the
+/// standard solid's network of Eq. (8), or a general material's network from G and K with its
+/// dashpot positions as states (two bodies' stacked networks are refused).
 pub fn run_euler(
     material: &CanonicalMaterial,
     grid: &Grid,
     capacity: usize,
     history: bool,
 ) -> Result<Outcome> {
-    let Network::StandardSolid(network) = &material.network else {
-        return Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string()));
-    };
     let geom = Foundation::new(grid.dx, 1.0, capacity);
-    let mut f = EulerFoundation::new(geom, *network);
+    match &material.network {
+        Network::StandardSolid(n) => {
+            euler_loop(EulerFoundation::new(geom, *n), grid, capacity, history)
+        }
+        Network::General(n) => euler_loop(
+            EulerFoundation::new(geom, n.clone()),
+            grid,
+            capacity,
+            history,
+        ),
+        Network::Stacked(_) => Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string())),
+    }
+}
+
+fn euler_loop<N: euler::Dashpots>(
+    mut f: EulerFoundation<N>,
+    grid: &Grid,
+    capacity: usize,
+    history: bool,
+) -> Result<Outcome> {
     let (mut t, mut d, mut v) = (0.0_f64, 0.0_f64, 1.0_f64);
     let mut hist = start_history(history);
     let mut tr = Tracker::default();
@@ -695,10 +712,10 @@ pub fn run_resolution(
         (Scheme::Exponential, Network::StandardSolid(_)) => {
             run_exponential(&material.prony, &grid, capacity, history)
         }
-        (Scheme::Euler, Network::General(_) | Network::Stacked(_)) => {
+        (Scheme::Euler, Network::Stacked(_)) => {
             Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string()))
         }
-        (Scheme::Euler, Network::StandardSolid(_)) => {
+        (Scheme::Euler, Network::StandardSolid(_) | Network::General(_)) => {
             let bound = euler_step_bound(&material.prony, layout.contact_radius);
             let dt = grid.dt_compression.max(grid.dt_restitution);
             if dt > bound {
@@ -760,8 +777,7 @@ pub fn solve_rtol(
     history: bool,
     work_limit: u64,
 ) -> Result<Outcome> {
-    if let (Scheme::Euler, Network::General(_) | Network::Stacked(_)) = (scheme, &material.network)
-    {
+    if let (Scheme::Euler, Network::Stacked(_)) = (scheme, &material.network) {
         return Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string()));
     }
     let layout = pilot_material(material)?;
