@@ -97,19 +97,31 @@ pub fn format_line_list(lines: &[u64]) -> String {
 
 /// Solve every row in parallel (rayon); the first failing row (in input order) is the error.
 pub fn solve_rows(file: &str, rows: &[Row], opts: &SolveOptions) -> Result<Vec<Outcome>> {
-    let results: Vec<Result<Outcome>> = rows
+    let groups: Vec<Groups> = rows.iter().map(|r| r.groups).collect();
+    solve_groups(&groups, opts).map_err(|(i, e)| Error::Csv {
+        file: file.to_string(),
+        line: rows[i].line,
+        message: e.to_string(),
+    })
+}
+
+/// Solve the impact of every set of groups in canonical units (`m = R = v0 = G_inf = 1`) in
+/// parallel (rayon), results in input order; the error is that of the first failing entry (in
+/// input order) with its index. The computation of `cor --input` (and of the Python package's
+/// `cor`), without the file.
+pub fn solve_groups(
+    groups: &[Groups],
+    opts: &SolveOptions,
+) -> std::result::Result<Vec<Outcome>, (usize, Error)> {
+    let results: Vec<Result<Outcome>> = groups
         .par_iter()
-        .map(|row| {
-            Impact::from_groups(row.groups)
-                .and_then(|imp| solve(&imp, opts))
-                .map_err(|e| Error::Csv {
-                    file: file.to_string(),
-                    line: row.line,
-                    message: e.to_string(),
-                })
-        })
+        .map(|&g| Impact::from_groups(g).and_then(|imp| solve(&imp, opts)))
         .collect();
-    results.into_iter().collect()
+    results
+        .into_iter()
+        .enumerate()
+        .map(|(i, r)| r.map_err(|e| (i, e)))
+        .collect()
 }
 
 /// Write the result table as CSV.

@@ -252,12 +252,29 @@ pub fn run(
     range: &VelocityRange,
     progress: &(dyn Fn() + Sync),
 ) -> Result<Curve> {
+    let rows = run_velocities(impact, opts, &range.values(), progress).map_err(|(_, e)| e)?;
+    Ok(Curve {
+        rows,
+        limits: limits(impact),
+    })
+}
+
+/// Solve `impact` (its velocity replaced) at each of `velocities` (m/s, any order) with `opts`
+/// (histories off), in parallel; rows in the order of `velocities`, each bit-identical to
+/// [`solve`] at that velocity. `progress` is called once per solved velocity. The error is that
+/// of the first failing velocity in input order, with its index; its message names the velocity
+/// (`--v0: at v0 = ... m/s: ...`). [`run`] is this on a [`VelocityRange`].
+pub fn run_velocities(
+    impact: &Impact,
+    opts: &SolveOptions,
+    velocities: &[f64],
+    progress: &(dyn Fn() + Sync),
+) -> std::result::Result<Vec<CurveRow>, (usize, Error)> {
     let opts = SolveOptions {
         history: false,
         ..*opts
     };
-    opts.validate()?;
-    let velocities = range.values();
+    opts.validate().map_err(|e| (0, e))?;
     let results: Vec<Result<CurveRow>> = velocities
         .par_iter()
         .map(|&v0| {
@@ -275,11 +292,11 @@ pub fn run(
             row
         })
         .collect();
-    let rows = results.into_iter().collect::<Result<Vec<_>>>()?;
-    Ok(Curve {
-        rows,
-        limits: limits(impact),
-    })
+    results
+        .into_iter()
+        .enumerate()
+        .map(|(i, r)| r.map_err(|e| (i, e)))
+        .collect()
 }
 
 /// The CSV text of the rows: header [`CSV_HEADER`], full-precision SI numbers.

@@ -34,6 +34,7 @@ pub mod mdr;
 pub mod output;
 pub mod plot;
 pub mod scene;
+pub mod scene_toml;
 pub mod solver;
 pub mod stress;
 pub mod sweep;

@@ -1317,8 +1317,15 @@ pub const PERFORMANCE: FilledSection = FilledSection {
     command: "mdr-impact bench",
 };
 
+/// The Python package's timing against the command line, filled by `python/bench_cor.py`.
+pub const PYTHON: FilledSection = FilledSection {
+    key: "python",
+    heading: "10. Python package: `cor` against `cor --input`",
+    command: "python python/bench_cor.py --report VALIDATION.md",
+};
+
 /// Every section filled by another command, in the order of the report.
-pub const FILLED: &[FilledSection] = &[STRESS, PERFORMANCE];
+pub const FILLED: &[FilledSection] = &[STRESS, PERFORMANCE, PYTHON];
 
 /// Keep the bodies of the sections that other commands fill ([`FILLED`]) when `fresh` replaces
 /// `existing`.

@@ -1,0 +1,287 @@
+"""Normal impact of a rigid sphere (or two bodies) on compressible linear-viscoelastic material.
+
+A Python interface to the Rust library ``mdr-impact``: the Method of Dimensionality Reduction
+(MDR) solver of Willert et al., *The influence of compressibility on the restitution
+coefficient for viscoelastic spheres in low-velocity normal impacts*, with the Lee-Radok/Ting
+reference theory and a reduced solver. The Rust library is the single source of the physics;
+this package converts types. SI units in and out throughout.
+
+Functions
+---------
+cor(nu, p2, p3, rtol=1e-6, solver="auto", full_output=False)
+    Coefficient of restitution from the dimensionless groups of Eq. (11), vectorised over numpy
+    arrays (broadcasting), solved in parallel.
+impact(target, ...)
+    One impact (a ``Scene``, or a material with sphere and velocity): an ``ImpactResult``.
+curve(scene, v0)
+    CoR, contact time, maximum force and compression of a scene at many impact velocities.
+
+Classes
+-------
+Material, GeneralMaterial, Prony, Sphere, Body, Scene, ImpactResult, Curve; ``Error`` (a
+``ValueError``) for bad input and refused solves, with the message the command line prints.
+
+Example
+-------
+>>> import mdr_impact as mi
+>>> round(mi.Scene.default().run().cor, 4)
+0.8376
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from . import _core
+from ._core import (
+    DEFAULT_RTOL,
+    DEFAULT_SCENE,
+    MAX_RTOL,
+    MIN_RTOL,
+    SOLVERS,
+    Body,
+    Error,
+    GeneralMaterial,
+    ImpactResult,
+    Material,
+    Prony,
+    Scene,
+    Sphere,
+)
+
+__all__ = [
+    "DEFAULT_RTOL",
+    "DEFAULT_SCENE",
+    "MAX_RTOL",
+    "MIN_RTOL",
+    "SOLVERS",
+    "Body",
+    "Curve",
+    "Error",
+    "GeneralMaterial",
+    "ImpactResult",
+    "Material",
+    "Prony",
+    "Scene",
+    "Sphere",
+    "catalogue",
+    "cor",
+    "curve",
+    "impact",
+]
+
+
+def _floats(name, x):
+    """``x`` as a float64 array; a value numpy cannot read as real numbers is an ``Error``."""
+    try:
+        a = np.asarray(x, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise Error(f"{name}: not a real number or array of real numbers ({e})") from None
+    return a
+
+
+def cor(nu, p2, p3, rtol=DEFAULT_RTOL, solver="auto", full_output=False):
+    """Coefficient of restitution from the dimensionless groups of Eq. (11).
+
+    The impact of a rigid sphere on a half-space of the paper's standard solid (shear
+    ``G(t) = G_inf + G_1 exp(-t / tau)``, elastic bulk) depends only on
+
+    - ``p1 = nu``, the static Poisson ratio, ``-1 < nu <= 0.5`` (0.5: incompressible);
+    - ``p2 = G_inf / G_1``, ``0 < p2 < inf``;
+    - ``p3 = eta (v0 R / (m^2 G_inf^3))^(1/5)``, ``0 <= p3 < inf`` (0: elastic, Hertz, ``e = 1``).
+
+    Parameters
+    ----------
+    nu, p2, p3 : float or array_like
+        The groups; broadcast against each other with numpy's rules. Every value must be finite.
+    rtol : float, optional
+        Requested relative accuracy of each CoR, ``1e-12 <= rtol <= 0.1`` (default ``1e-6``).
+        Every answer is verified to it or refused.
+    solver : {"auto", "fast", "reference", "mdr", "mdr-euler"}, optional
+        ``auto`` (default) answers with the reduced solver ``fast`` and falls back to
+        ``reference`` (Lee-Radok/Ting) when ``fast`` refuses.
+    full_output : bool, optional
+        Also return the contact time and the maximum indentation, in canonical units
+        ``m = R = v0 = G_inf = 1`` (the columns of ``mdr-impact cor --input``).
+
+    Returns
+    -------
+    cor : float or ndarray
+        The CoR, of the broadcast shape; a float when all three inputs are scalars.
+    contact_time, max_indentation : float or ndarray
+        Only with ``full_output=True``.
+
+    Raises
+    ------
+    Error
+        (a ``ValueError``) for a value out of range or not finite, naming the group and, for
+        arrays, the index (``index (1, 2): p2 = -1e0 is out of range: allowed ...``), a bad
+        ``rtol`` or ``solver``, or a solve that cannot be verified to ``rtol``; the message after
+        the index is the one ``mdr-impact cor`` prints. Nothing is returned then.
+
+    Notes
+    -----
+    The elements are solved in parallel on all cores with the GIL released; the results equal
+    ``mdr-impact cor --input`` on the same rows bit for bit. Willert et al., Eqs. (10)-(11).
+
+    Examples
+    --------
+    >>> import numpy as np, mdr_impact as mi
+    >>> e = mi.cor(0.45, np.logspace(-3, 0, 4)[:, None], np.array([0.1, 1.0, 10.0]))
+    >>> e.shape
+    (4, 3)
+    """
+    arrays = np.broadcast_arrays(_floats("nu", nu), _floats("p2", p2), _floats("p3", p3))
+    shape = arrays[0].shape
+    flat = [np.ascontiguousarray(a, dtype=np.float64).reshape(-1) for a in arrays]
+    c, t, d = _core.cor_groups(flat[0], flat[1], flat[2], list(shape), float(rtol), str(solver))
+    out = tuple(float(x) if shape == () else x for x in (c, t, d))
+    return out if full_output else out[0]
+
+
+def impact(target, *, velocity=None, mass=None, radius=None, solver=None, rtol=None,
+           history=False):
+    """One impact: CoR, contact time, maximum force and the rest, optionally with histories.
+
+    Parameters
+    ----------
+    target : Scene, Material or GeneralMaterial
+        A ``Scene`` (its sphere or bodies, material(s), velocity and solver), or the half-space
+        material, then with ``mass``, ``radius`` and ``velocity``.
+    velocity : float, optional
+        Impact velocity (m/s), ``0 < v0 < inf``; replaces a scene's.
+    mass, radius : float, optional
+        The rigid sphere (kg, m); only with a material.
+    solver : str, optional
+        ``auto`` (default), ``fast``, ``reference``, ``mdr`` or ``mdr-euler``; replaces a
+        scene's.
+    rtol : float, optional
+        Requested relative accuracy of the CoR (default ``1e-6``); replaces a scene's.
+    history : bool, optional
+        Also return the histories ``t, d, v, force, a`` as numpy arrays (SI).
+
+    Returns
+    -------
+    ImpactResult
+        ``cor``, ``rebound_velocity`` (m/s), ``contact_time`` (s), ``max_indentation`` (m),
+        ``time_of_max_indentation`` (s), ``max_force`` (N), ``max_contact_radius`` (m),
+        ``dissipated_energy`` (J), ``solver``, ``estimated_rel_error``, ``fallback``, ``work``,
+        ``history`` (dict of arrays or ``None``), ``bodies`` (two bodies only).
+
+    Raises
+    ------
+    Error
+        (a ``ValueError``) with the message of ``mdr-impact run``.
+
+    Examples
+    --------
+    >>> import mdr_impact as mi
+    >>> m = mi.Material(1.0e6, 1.0e7, 500.0, poisson=0.49)
+    >>> r = mi.impact(m, mass=4.11e-3, radius=5.0e-3, velocity=0.99)
+    >>> r.cor == mi.Scene.default().run().cor
+    True
+    """
+    if isinstance(target, Scene):
+        if mass is not None or radius is not None:
+            raise Error("mass and radius belong to the scene: give a material to set them")
+        scene = target
+        if solver is not None or rtol is not None:
+            scene = scene.with_solver(solver=solver, rtol=rtol)
+        if velocity is not None:
+            scene = scene.with_velocity(velocity)
+    else:
+        if mass is None or radius is None or velocity is None:
+            raise Error("impact(material, ...) needs mass (kg), radius (m) and velocity (m/s)")
+        scene = Scene(
+            sphere=Sphere(mass, radius),
+            material=target,
+            velocity=velocity,
+            solver="auto" if solver is None else solver,
+            rtol=DEFAULT_RTOL if rtol is None else rtol,
+        )
+    return scene.run(history=history)
+
+
+class Curve:
+    """CoR against impact velocity of one scene (the result of ``curve``).
+
+    Attributes
+    ----------
+    v0 : ndarray
+        Impact velocities (m/s), as given.
+    cor : ndarray
+        Coefficient of restitution at each velocity.
+    contact_time : ndarray
+        Contact time (s).
+    max_force : ndarray
+        Maximum contact force (N).
+    max_compression : ndarray
+        Maximum compression = maximum indentation (m).
+    limits : dict
+        The elastic limits of the material (see ``mdr-impact curve``): ``relaxed_modulus`` and
+        ``glassy_modulus`` (plane-strain ``E* = 4 G_eq``, Pa), ``p3_unit_velocity`` (m/s, the
+        standard solid's ``p3 = 1``, near which the CoR is smallest), ``slowest_tau``,
+        ``fastest_tau`` (s), ``relaxed_crossover``, ``glassy_crossover`` (m/s, general
+        materials); ``None`` where not defined.
+    """
+
+    def __init__(self, values):
+        self.v0 = values["v0"]
+        self.cor = values["cor"]
+        self.contact_time = values["contact_time"]
+        self.max_force = values["max_force"]
+        self.max_compression = values["max_compression"]
+        self.limits = dict(values["limits"])
+
+    def __len__(self):
+        return self.v0.size
+
+    def __repr__(self):
+        return f"Curve(v0 of shape {self.v0.shape}, cor from {self.cor.min(initial=np.inf):.6g} " \
+            f"to {self.cor.max(initial=-np.inf):.6g})"
+
+
+def curve(scene, v0):
+    """CoR against impact velocity: ``scene`` solved at every velocity of ``v0``.
+
+    The sphere (or bodies), material(s) and solver settings of ``scene`` are kept; only the
+    impact velocity changes. The rows equal ``mdr-impact curve`` (and ``Scene.run`` at each
+    velocity) bit for bit.
+
+    Parameters
+    ----------
+    scene : Scene
+        The impact (for example ``Scene.default()`` or ``Scene.load("my.toml")``).
+    v0 : float or array_like
+        Impact velocities (m/s), each finite and ``> 0``; any shape, any order.
+
+    Returns
+    -------
+    Curve
+        Arrays ``v0``, ``cor``, ``contact_time`` (s), ``max_force`` (N), ``max_compression`` (m)
+        of the shape of ``v0``, and the material's ``limits``.
+
+    Raises
+    ------
+    Error
+        (a ``ValueError``) naming the index and velocity of the first failing solve
+        (``index (3,): --v0: at v0 = -1e0 m/s: velocity = ...``).
+
+    Examples
+    --------
+    >>> import numpy as np, mdr_impact as mi
+    >>> c = mi.curve(mi.Scene.default(), np.logspace(-2, 1, 50))
+    >>> bool(c.cor.min() > 0.5)
+    True
+    """
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a Scene, not {type(scene).__name__}")
+    v = _floats("v0", v0)
+    flat = np.ascontiguousarray(v, dtype=np.float64).reshape(-1)
+    return Curve(_core.curve_values(scene, flat, list(v.shape)))
+
+
+def catalogue():
+    """The validation catalogue's impact cases: a list of dicts ``id``, ``regime``, ``nu``,
+    ``p2``, ``p3`` (the cases of ``VALIDATION.md``)."""
+    return _core.catalogue_impacts()

@@ -1,0 +1,1026 @@
+//! `mdr_impact._core`: the Python binding of the `mdr-impact` library (PyO3, rust-numpy).
+//!
+//! This layer only converts types: every number comes from the library ([`mdr_impact::solve`],
+//! [`mdr_impact::batch::solve_groups`], [`mdr_impact::curve::run_velocities`], the scene
+//! parser), every error is the library's [`mdr_impact::Error`] with the message the command line
+//! prints (after `error: `), raised as `mdr_impact.Error`, a subclass of `ValueError`. Solves run
+//! with the GIL released, many at once in parallel (rayon). The public Python API, with its
+//! docstrings, is `mdr_impact/__init__.py`; the docstrings here describe the classes.
+
+use std::path::PathBuf;
+
+use numpy::{PyArray1, PyArrayDyn, PyArrayLikeDyn, PyArrayMethods, PyReadonlyArray1};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+
+use mdr_impact::bodies::Side;
+use mdr_impact::error::escape_text;
+use mdr_impact::material::{BulkProny, BulkRheology, ShearProny};
+use mdr_impact::scene::Scene as RsScene;
+use mdr_impact::{
+    batch, catalogue, curve, output, tolerances, Body as RsBody, BodyMaterial, Bulk,
+    GeneralMaterial as RsGeneral, Groups, History, Impact, ImpactMaterial, Material as RsMaterial,
+    Outcome, Resolution, SolveOptions, SolverKind, Sphere as RsSphere, TwoBodies,
+};
+
+pyo3::create_exception!(
+    _core,
+    Error,
+    PyValueError,
+    "Bad input or a refused solve: the message is the one `mdr-impact` prints after `error: `."
+);
+
+/// The library's error as `mdr_impact.Error` (a `ValueError`), message as on the command line.
+fn py_err(e: mdr_impact::Error) -> PyErr {
+    Error::new_err(escape_text(&e.to_string()))
+}
+
+/// A library result as a Python result.
+fn ok<T>(r: mdr_impact::Result<T>) -> PyResult<T> {
+    r.map_err(py_err)
+}
+
+/// A message of this layer (argument combinations) as `mdr_impact.Error`.
+fn usage(message: String) -> PyErr {
+    Error::new_err(message)
+}
+
+/// `(i, j, ...)` of the flat (C-order) index `flat` in an array of `shape`.
+fn unravel(mut flat: usize, shape: &[usize]) -> String {
+    let mut idx = vec![0usize; shape.len()];
+    for (k, &n) in shape.iter().enumerate().rev() {
+        if n > 0 {
+            idx[k] = flat % n;
+            flat /= n;
+        }
+    }
+    let parts: Vec<String> = idx.iter().map(usize::to_string).collect();
+    if parts.len() == 1 {
+        format!("({},)", parts[0])
+    } else {
+        format!("({})", parts.join(", "))
+    }
+}
+
+/// The error of element `flat` of an array of `shape`: the command line's message, prefixed by
+/// the element's index unless the input was a scalar (`shape = ()`).
+fn element_err(flat: usize, shape: &[usize], e: mdr_impact::Error) -> PyErr {
+    let msg = escape_text(&e.to_string());
+    if shape.is_empty() {
+        Error::new_err(msg)
+    } else {
+        Error::new_err(format!("index {}: {msg}", unravel(flat, shape)))
+    }
+}
+
+/// Solve options from the Python arguments, validated as the command line does.
+fn options(solver: &str, rtol: f64) -> PyResult<SolveOptions> {
+    let opts = SolveOptions {
+        solver: ok(solver.parse::<SolverKind>())?,
+        rtol,
+        ..Default::default()
+    };
+    ok(opts.validate())?;
+    Ok(opts)
+}
+
+fn array<'py>(py: Python<'py>, v: Vec<f64>, shape: &[usize]) -> PyResult<Bound<'py, PyAny>> {
+    let a = PyArray1::from_vec(py, v);
+    Ok(a.reshape(shape.to_vec())?.into_any())
+}
+
+// ------------------------------------------------------------------------------------------
+// Dimensionless groups
+// ------------------------------------------------------------------------------------------
+
+/// CoR, contact time and maximum indentation (canonical units `m = R = v0 = G_inf = 1`) of the
+/// flat arrays `nu`, `p2`, `p3` (equal lengths) that were broadcast to `shape`: the computation
+/// of `mdr-impact cor --input`, in parallel, GIL released. Errors name the element's index.
+#[pyfunction]
+#[pyo3(signature = (nu, p2, p3, shape, rtol, solver))]
+fn cor_groups<'py>(
+    py: Python<'py>,
+    nu: PyReadonlyArray1<'py, f64>,
+    p2: PyReadonlyArray1<'py, f64>,
+    p3: PyReadonlyArray1<'py, f64>,
+    shape: Vec<usize>,
+    rtol: f64,
+    solver: &str,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let opts = options(solver, rtol)?;
+    let (nu, p2, p3) = (nu.to_vec()?, p2.to_vec()?, p3.to_vec()?);
+    if nu.len() != p2.len() || nu.len() != p3.len() {
+        return Err(usage(format!(
+            "nu, p2 and p3 have {}, {} and {} elements: broadcast them first",
+            nu.len(),
+            p2.len(),
+            p3.len()
+        )));
+    }
+    if nu.len() != shape.iter().product::<usize>() {
+        return Err(usage(format!(
+            "{} elements do not fill the shape {shape:?}",
+            nu.len()
+        )));
+    }
+    // every input checked before anything is solved, as `cor --input` reads its file first
+    let mut groups = Vec::with_capacity(nu.len());
+    for i in 0..nu.len() {
+        groups.push(Groups::new(nu[i], p2[i], p3[i]).map_err(|e| element_err(i, &shape, e))?);
+    }
+    let outcomes = py
+        .detach(|| batch::solve_groups(&groups, &opts))
+        .map_err(|(i, e)| element_err(i, &shape, e))?;
+    let pick = |f: fn(&Outcome) -> f64| outcomes.iter().map(f).collect::<Vec<f64>>();
+    let cor = array(py, pick(|o| o.cor), &shape)?;
+    let time = array(py, pick(|o| o.contact_time), &shape)?;
+    let depth = array(py, pick(|o| o.max_indentation), &shape)?;
+    PyTuple::new(py, [cor, time, depth])
+}
+
+/// The catalogue of validation cases (`src/catalogue.rs`): a list of dicts with the keys `id`,
+/// `regime`, `nu`, `p2`, `p3`.
+#[pyfunction]
+fn catalogue_impacts(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
+    catalogue::IMPACTS
+        .iter()
+        .map(|c| {
+            let d = PyDict::new(py);
+            d.set_item("id", c.id)?;
+            d.set_item("regime", c.regime.name())?;
+            d.set_item("nu", c.nu)?;
+            d.set_item("p2", c.p2)?;
+            d.set_item("p3", c.p3)?;
+            Ok(d)
+        })
+        .collect()
+}
+
+// ------------------------------------------------------------------------------------------
+// Materials
+// ------------------------------------------------------------------------------------------
+
+/// A Prony series `f(t) = relaxed + sum_i c_i exp(-t / tau_i)`: moduli in Pa, times in s.
+///
+/// `Prony(relaxed, terms=())` with `terms` a sequence of pairs `(c_i, tau_i)` (an `(n, 2)` array
+/// works). It only holds the numbers; they are checked where the series is used (a
+/// `GeneralMaterial` names `g_i[k]`, `tau_i[k]`, `k_j[k]`, `theta_j[k]` in its errors). Calling
+/// it evaluates `f(t)` elementwise (`t` in s, a scalar or an array).
+#[pyclass(frozen, eq, module = "mdr_impact")]
+#[derive(Debug, Clone, PartialEq)]
+struct Prony {
+    relaxed: f64,
+    terms: Vec<(f64, f64)>,
+}
+
+#[pymethods]
+impl Prony {
+    #[new]
+    #[pyo3(signature = (relaxed, terms = Vec::new()))]
+    fn new(relaxed: f64, terms: Vec<[f64; 2]>) -> Self {
+        Self {
+            relaxed,
+            terms: terms.into_iter().map(|[c, t]| (c, t)).collect(),
+        }
+    }
+
+    /// The relaxed value `f(inf)` (Pa).
+    #[getter]
+    fn relaxed(&self) -> f64 {
+        self.relaxed
+    }
+
+    /// The terms as an `(n, 2)` array of `(c_i` (Pa), `tau_i` (s)`)`.
+    #[getter]
+    fn terms<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let flat: Vec<f64> = self.terms.iter().flat_map(|&(c, t)| [c, t]).collect();
+        array(py, flat, &[self.terms.len(), 2])
+    }
+
+    /// The glassy value `f(0) = relaxed + sum_i c_i` (Pa).
+    #[getter]
+    fn glassy(&self) -> f64 {
+        self.relaxed + self.terms.iter().map(|&(c, _)| c).sum::<f64>()
+    }
+
+    fn __call__<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyArrayLikeDyn<'py, f64, numpy::AllowTypeChange>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let p = self.library();
+        let values = t.as_array().mapv(|t| p.eval(t));
+        if values.ndim() == 0 {
+            let v = values.iter().next().copied().unwrap_or(f64::NAN);
+            return Ok(v.into_pyobject(py)?.into_any());
+        }
+        Ok(PyArrayDyn::from_owned_array(py, values).into_any())
+    }
+
+    fn __len__(&self) -> usize {
+        self.terms.len()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Prony(relaxed={:?}, terms={:?})", self.relaxed, self.terms)
+    }
+}
+
+impl Prony {
+    fn library(&self) -> mdr_impact::Prony {
+        mdr_impact::Prony {
+            relaxed: self.relaxed,
+            terms: self
+                .terms
+                .iter()
+                .map(|&(coefficient, tau)| mdr_impact::PronyTerm { coefficient, tau })
+                .collect(),
+        }
+    }
+    fn of(p: &mdr_impact::Prony) -> Self {
+        Self {
+            relaxed: p.relaxed,
+            terms: p.terms.iter().map(|t| (t.coefficient, t.tau)).collect(),
+        }
+    }
+}
+
+/// The paper's standard solid: shear `G(t) = g_inf + g_1 exp(-t g_1 / eta)` (Pa, Pa s) with an
+/// elastic bulk given by the static Poisson ratio `poisson` (`-1 < nu <= 0.5`, 0.5:
+/// incompressible) or the bulk modulus `k_0` (Pa), exactly one of them.
+#[pyclass(frozen, eq, module = "mdr_impact")]
+#[derive(Debug, Clone, PartialEq)]
+struct Material {
+    inner: RsMaterial,
+}
+
+#[pymethods]
+impl Material {
+    #[new]
+    #[pyo3(signature = (g_inf, g_1, eta, *, poisson = None, k_0 = None))]
+    fn new(
+        g_inf: f64,
+        g_1: f64,
+        eta: f64,
+        poisson: Option<f64>,
+        k_0: Option<f64>,
+    ) -> PyResult<Self> {
+        let inner = match (poisson, k_0) {
+            (Some(nu), None) => ok(RsMaterial::with_poisson(g_inf, g_1, eta, nu))?,
+            (None, Some(k)) => ok(RsMaterial::new(g_inf, g_1, eta, k))?,
+            (Some(_), Some(_)) => return Err(usage("give either poisson or k_0, not both".into())),
+            (None, None) => {
+                return Err(usage("missing poisson (-1 < nu <= 0.5) or k_0 (Pa)".into()))
+            }
+        };
+        Ok(Self { inner })
+    }
+    /// Relaxed shear modulus `G_inf` (Pa).
+    #[getter]
+    fn g_inf(&self) -> f64 {
+        self.inner.g_inf()
+    }
+    /// Relaxing shear modulus `G_1` (Pa).
+    #[getter]
+    fn g_1(&self) -> f64 {
+        self.inner.g_1()
+    }
+    /// Shear viscosity `eta` (Pa s).
+    #[getter]
+    fn eta(&self) -> f64 {
+        self.inner.eta()
+    }
+    /// Bulk modulus `K_0` (Pa), `inf` when incompressible.
+    #[getter]
+    fn k_0(&self) -> f64 {
+        self.inner.k_0()
+    }
+    /// Static Poisson ratio (0.5 when incompressible).
+    #[getter]
+    fn poisson(&self) -> f64 {
+        match self.inner.bulk() {
+            Bulk::Incompressible => 0.5,
+            Bulk::Modulus(_) => self.inner.poisson(),
+        }
+    }
+    /// Relaxation time `tau = eta / g_1` (s).
+    #[getter]
+    fn tau(&self) -> f64 {
+        self.inner.tau()
+    }
+    /// True when `g_1 = 0` or `eta = 0` (Hertz with `g_inf`).
+    #[getter]
+    fn is_elastic(&self) -> bool {
+        self.inner.is_elastic()
+    }
+    /// The equivalent incompressible relaxation function `G_eq(t)` (theory notes §2) as a
+    /// `Prony` (Pa, s).
+    fn equivalent_relaxation(&self) -> Prony {
+        Prony::of(&self.inner.equivalent_relaxation())
+    }
+    /// This standard solid as a `GeneralMaterial` (one shear term).
+    fn general(&self) -> GeneralMaterial {
+        GeneralMaterial {
+            inner: self.inner.general(),
+        }
+    }
+    fn __repr__(&self) -> String {
+        let bulk = match self.inner.bulk() {
+            Bulk::Incompressible => "poisson=0.5".to_string(),
+            Bulk::Modulus(k) => format!("k_0={k:?}"),
+        };
+        format!(
+            "Material(g_inf={:?}, g_1={:?}, eta={:?}, {bulk})",
+            self.inner.g_inf(),
+            self.inner.g_1(),
+            self.inner.eta()
+        )
+    }
+}
+
+/// A general linear-viscoelastic solid (theory notes §8): the shear series `shear` (a `Prony`
+/// with `relaxed = g_inf`, terms `(g_i, tau_i)`) and exactly one bulk: `bulk` (a `Prony`,
+/// `relaxed = k_inf`, terms `(k_j, theta_j)`), `k_0` (Pa), `poisson` or `incompressible=True`.
+#[pyclass(frozen, eq, module = "mdr_impact")]
+#[derive(Debug, Clone, PartialEq)]
+struct GeneralMaterial {
+    inner: RsGeneral,
+}
+
+#[pymethods]
+impl GeneralMaterial {
+    #[new]
+    #[pyo3(signature = (shear, *, bulk = None, k_0 = None, poisson = None, incompressible = false))]
+    fn new(
+        shear: PyRef<'_, Prony>,
+        bulk: Option<PyRef<'_, Prony>>,
+        k_0: Option<f64>,
+        poisson: Option<f64>,
+        incompressible: bool,
+    ) -> PyResult<Self> {
+        let given = [
+            bulk.is_some(),
+            k_0.is_some(),
+            poisson.is_some(),
+            incompressible,
+        ];
+        if given.iter().filter(|g| **g).count() != 1 {
+            return Err(usage(
+                "give exactly one bulk: bulk=Prony(k_inf, terms), k_0, poisson or \
+                 incompressible=True"
+                    .into(),
+            ));
+        }
+        let s = ok(ShearProny::new(shear.relaxed, &shear.terms))?;
+        let rheology = match (bulk, k_0, poisson) {
+            (Some(b), _, _) => BulkRheology::Prony(ok(BulkProny::new(b.relaxed, &b.terms))?),
+            (_, Some(k), _) => BulkRheology::Elastic(k),
+            (_, _, Some(nu)) => BulkRheology::Poisson(nu),
+            _ => BulkRheology::Incompressible,
+        };
+        Ok(Self {
+            inner: ok(RsGeneral::new(s, rheology))?,
+        })
+    }
+    /// The shear series `G(t)` as validated (terms sorted by time, equal times merged, zero
+    /// moduli dropped).
+    #[getter]
+    fn shear(&self) -> Prony {
+        let s = self.inner.shear();
+        Prony {
+            relaxed: s.g_inf(),
+            terms: s.terms().to_vec(),
+        }
+    }
+    /// The bulk series `K(t)` when viscoelastic, else `None`.
+    #[getter]
+    fn bulk(&self) -> Option<Prony> {
+        match self.inner.bulk() {
+            BulkRheology::Prony(p) => Some(Prony {
+                relaxed: p.k_inf(),
+                terms: p.terms().to_vec(),
+            }),
+            _ => None,
+        }
+    }
+    /// `"incompressible"`, `"elastic"` or `"prony"`.
+    #[getter]
+    fn bulk_kind(&self) -> &'static str {
+        match self.inner.bulk() {
+            BulkRheology::Incompressible => "incompressible",
+            BulkRheology::Prony(_) => "prony",
+            BulkRheology::Elastic(_) | BulkRheology::Poisson(_) => "elastic",
+        }
+    }
+    /// Relaxed bulk modulus `K(inf)` (Pa), `inf` when incompressible.
+    #[getter]
+    fn k_0(&self) -> f64 {
+        self.inner.bulk_relaxed()
+    }
+    /// `G_eq(t)` (theory notes §8) as an exact `Prony` series (Pa, s).
+    fn equivalent_relaxation(&self) -> PyResult<Prony> {
+        Ok(Prony::of(&ok(self.inner.equivalent_relaxation())?))
+    }
+    fn __repr__(&self) -> String {
+        let bulk = match self.inner.bulk() {
+            BulkRheology::Incompressible => "incompressible=True".to_string(),
+            BulkRheology::Elastic(k) | BulkRheology::Poisson(k) => format!("k_0={k:?}"),
+            BulkRheology::Prony(_) => format!(
+                "bulk={}",
+                self.bulk().map(|b| b.__repr__()).unwrap_or_default()
+            ),
+        };
+        format!("GeneralMaterial(shear={}, {bulk})", self.shear().__repr__())
+    }
+}
+
+/// A Python material object (`Material`, `GeneralMaterial`) as the library's body material.
+fn body_material(m: &Bound<'_, PyAny>) -> PyResult<BodyMaterial> {
+    if let Ok(m) = m.cast::<Material>() {
+        return Ok(BodyMaterial::StandardSolid(m.get().inner));
+    }
+    if let Ok(m) = m.cast::<GeneralMaterial>() {
+        return Ok(BodyMaterial::General(m.get().inner.clone()));
+    }
+    Err(pyo3::exceptions::PyTypeError::new_err(format!(
+        "material must be a Material or a GeneralMaterial, not {}",
+        m.get_type().name()?
+    )))
+}
+
+/// A body material as a Python object (`None` when rigid).
+fn material_object(py: Python<'_>, m: &BodyMaterial) -> PyResult<Option<Py<PyAny>>> {
+    Ok(match m {
+        BodyMaterial::Rigid => None,
+        BodyMaterial::StandardSolid(m) => Some(Py::new(py, Material { inner: *m })?.into_any()),
+        BodyMaterial::General(m) => {
+            Some(Py::new(py, GeneralMaterial { inner: m.clone() })?.into_any())
+        }
+    })
+}
+
+// ------------------------------------------------------------------------------------------
+// Sphere, bodies, scenes
+// ------------------------------------------------------------------------------------------
+
+/// A rigid sphere: `mass` (kg) and `radius` (m), both `0 < x < inf`.
+#[pyclass(frozen, eq, module = "mdr_impact")]
+#[derive(Debug, Clone, PartialEq)]
+struct Sphere {
+    inner: RsSphere,
+}
+
+#[pymethods]
+impl Sphere {
+    #[new]
+    fn new(mass: f64, radius: f64) -> PyResult<Self> {
+        Ok(Self {
+            inner: ok(RsSphere::new(mass, radius))?,
+        })
+    }
+    /// Mass (kg).
+    #[getter]
+    fn mass(&self) -> f64 {
+        self.inner.mass()
+    }
+    /// Radius (m).
+    #[getter]
+    fn radius(&self) -> f64 {
+        self.inner.radius()
+    }
+    fn __repr__(&self) -> String {
+        format!(
+            "Sphere(mass={:?}, radius={:?})",
+            self.inner.mass(),
+            self.inner.radius()
+        )
+    }
+}
+
+/// One body of a two-body collision: `radius` (m, `inf` for a flat wall), `mass` (kg, `inf`
+/// allowed) or `density` (kg/m^3, with a finite radius), and a `material` (`Material` or
+/// `GeneralMaterial`) or `rigid=True`.
+#[pyclass(frozen, eq, module = "mdr_impact")]
+#[derive(Debug, Clone, PartialEq)]
+struct Body {
+    inner: RsBody,
+}
+
+/// `e` without the `body A ` of its field: a body is named only once it is placed in a scene.
+fn unsided(e: mdr_impact::Error) -> mdr_impact::Error {
+    match e {
+        mdr_impact::Error::OutOfRange {
+            field,
+            value,
+            allowed,
+        } => mdr_impact::Error::OutOfRange {
+            field: field.strip_prefix("body A ").unwrap_or(field),
+            value,
+            allowed,
+        },
+        other => other,
+    }
+}
+
+impl Body {
+    /// The same body as body `side` of a collision.
+    fn as_side(&self, side: Side) -> PyResult<RsBody> {
+        let b = &self.inner;
+        ok(RsBody::new(
+            side,
+            b.mass(),
+            b.radius(),
+            b.material().clone(),
+        ))
+    }
+}
+
+#[pymethods]
+impl Body {
+    #[new]
+    #[pyo3(signature = (*, radius, material = None, mass = None, density = None, rigid = false))]
+    fn new(
+        radius: f64,
+        material: Option<&Bound<'_, PyAny>>,
+        mass: Option<f64>,
+        density: Option<f64>,
+        rigid: bool,
+    ) -> PyResult<Self> {
+        let material = match (material, rigid) {
+            (Some(m), false) => body_material(m)?,
+            (None, true) => BodyMaterial::Rigid,
+            (Some(_), true) => {
+                return Err(usage(
+                    "give either a material or rigid=True, not both".into(),
+                ))
+            }
+            (None, false) => return Err(usage("missing material (or rigid=True)".into())),
+        };
+        let inner = match (mass, density) {
+            (Some(m), None) => RsBody::new(Side::A, m, radius, material),
+            (None, Some(rho)) => RsBody::with_density(Side::A, rho, radius, material),
+            (Some(_), Some(_)) => {
+                return Err(usage(
+                    "give either mass (kg) or density (kg/m^3), not both".into(),
+                ))
+            }
+            (None, None) => {
+                return Err(usage(
+                    "missing mass (kg, inf for a wall) or density (kg/m^3)".into(),
+                ))
+            }
+        }
+        .map_err(|e| py_err(unsided(e)))?;
+        Ok(Self { inner })
+    }
+    /// Mass (kg), possibly `inf`.
+    #[getter]
+    fn mass(&self) -> f64 {
+        self.inner.mass()
+    }
+    /// Radius (m), `inf` for a wall.
+    #[getter]
+    fn radius(&self) -> f64 {
+        self.inner.radius()
+    }
+    /// True for a rigid body.
+    #[getter]
+    fn rigid(&self) -> bool {
+        self.inner.material().is_rigid()
+    }
+    /// The material (`Material` or `GeneralMaterial`), `None` when rigid.
+    #[getter]
+    fn material(&self, py: Python<'_>) -> PyResult<Option<Py<PyAny>>> {
+        material_object(py, self.inner.material())
+    }
+    fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
+        let m = match self.material(py)? {
+            Some(m) => format!("material={}", m.bind(py).repr()?),
+            None => "rigid=True".into(),
+        };
+        Ok(format!(
+            "Body(mass={:?}, radius={:?}, {m})",
+            self.inner.mass(),
+            self.inner.radius()
+        ))
+    }
+}
+
+/// An impact with its solver settings, as in a scene file: one `sphere` on a half-space of
+/// `material`, or two `bodies`; `velocity` (m/s) the (relative) normal impact velocity; the
+/// solver's `name`, `rtol`, and optionally an explicit MDR resolution `elements`, `steps`; the
+/// `[output]` paths `history` and `plot` are kept for `to_toml` (files are written by
+/// `mdr-impact run`, not by `Scene.run`).
+#[pyclass(frozen, eq, module = "mdr_impact")]
+#[derive(Debug, Clone, PartialEq)]
+struct Scene {
+    inner: RsScene,
+}
+
+#[pymethods]
+impl Scene {
+    #[new]
+    #[pyo3(signature = (*, velocity, sphere = None, material = None, bodies = None,
+        solver = "auto", rtol = tolerances::DEFAULT_RTOL, elements = None, steps = None,
+        history = None, plot = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        velocity: f64,
+        sphere: Option<PyRef<'_, Sphere>>,
+        material: Option<&Bound<'_, PyAny>>,
+        bodies: Option<(PyRef<'_, Body>, PyRef<'_, Body>)>,
+        solver: &str,
+        rtol: f64,
+        elements: Option<usize>,
+        steps: Option<usize>,
+        history: Option<PathBuf>,
+        plot: Option<PathBuf>,
+    ) -> PyResult<Self> {
+        let impact = match (sphere, material, bodies) {
+            (Some(s), Some(m), None) => match body_material(m)? {
+                BodyMaterial::StandardSolid(m) => ok(Impact::new(s.inner, velocity, m))?,
+                BodyMaterial::General(m) => ok(Impact::with_general(s.inner, velocity, m))?,
+                BodyMaterial::Rigid => unreachable!("body_material never returns Rigid"),
+            },
+            (None, None, Some((a, b))) => {
+                let pair = ok(TwoBodies::new(a.as_side(Side::A)?, b.as_side(Side::B)?))?;
+                ok(Impact::with_bodies(pair, velocity))?
+            }
+            _ => {
+                return Err(usage(
+                    "give sphere and material (one sphere on a half-space) or bodies=(a, b) \
+                     (a collision)"
+                        .into(),
+                ))
+            }
+        };
+        let mut options = options(solver, rtol)?;
+        options.resolution = match (elements, steps) {
+            (Some(elements), Some(steps)) => Some(Resolution { elements, steps }),
+            (None, None) => None,
+            _ => return Err(usage("give both elements and steps, or neither".into())),
+        };
+        for (field, path) in [("history", &history), ("plot", &plot)] {
+            if path.as_ref().is_some_and(|p| p.as_os_str().is_empty()) {
+                return Err(usage(format!("{field} is an empty path: give a file name")));
+            }
+        }
+        options.history = history.is_some() || plot.is_some();
+        ok(options.validate())?;
+        Ok(Self {
+            inner: RsScene {
+                impact,
+                options,
+                history_csv: history,
+                plot,
+            },
+        })
+    }
+
+    /// Read a scene file (TOML); a Prony table `file` is relative to the scene's folder.
+    #[staticmethod]
+    fn load(path: PathBuf) -> PyResult<Self> {
+        Ok(Self {
+            inner: ok(RsScene::load(&path))?,
+        })
+    }
+
+    /// Parse scene TOML text; Prony table files are read relative to `base` (default: the
+    /// working directory).
+    #[staticmethod]
+    #[pyo3(signature = (text, base = None))]
+    fn from_toml(text: &str, base: Option<PathBuf>) -> PyResult<Self> {
+        let base = base.unwrap_or_default();
+        Ok(Self {
+            inner: ok(RsScene::parse_in(text, &base))?,
+        })
+    }
+
+    /// The embedded default scene (`scenes/default.toml`: a 10 mm steel ball on an elastomer).
+    #[staticmethod]
+    fn default() -> Self {
+        Self {
+            inner: RsScene::default_scene(),
+        }
+    }
+
+    /// The scene as TOML text (validated form; `Scene.from_toml(s.to_toml()) == s`).
+    fn to_toml(&self) -> String {
+        self.inner.to_toml()
+    }
+
+    /// Write `to_toml()` to `path` (atomically: no partial file).
+    fn save(&self, path: PathBuf) -> PyResult<()> {
+        let text = self.inner.to_toml();
+        ok(output::write_atomic(&path, |w| {
+            w.write_all(text.as_bytes())
+                .map_err(|e| mdr_impact::Error::io(&path, e))
+        }))
+    }
+
+    /// The same scene at another impact velocity (m/s).
+    fn with_velocity(&self, velocity: f64) -> PyResult<Self> {
+        let mut inner = self.inner.clone();
+        inner.impact = ok(self.inner.impact.at_velocity(velocity))?;
+        Ok(Self { inner })
+    }
+
+    /// The same scene with another solver (`solver`: auto, fast, reference, mdr, mdr-euler)
+    /// and/or requested rtol; `None` keeps the scene's.
+    #[pyo3(signature = (solver = None, rtol = None))]
+    fn with_solver(&self, solver: Option<&str>, rtol: Option<f64>) -> PyResult<Self> {
+        let mut inner = self.inner.clone();
+        if let Some(name) = solver {
+            inner.options.solver = ok(name.parse::<SolverKind>())?;
+        }
+        if let Some(rtol) = rtol {
+            inner.options.rtol = rtol;
+        }
+        ok(inner.options.validate())?;
+        Ok(Self { inner })
+    }
+
+    /// Solve the impact (GIL released); with `history=True` the result carries the histories.
+    #[pyo3(signature = (history = false))]
+    fn run(&self, py: Python<'_>, history: bool) -> PyResult<ImpactResult> {
+        let opts = SolveOptions {
+            history,
+            ..self.inner.options
+        };
+        let impact = &self.inner.impact;
+        let outcome = ok(py.detach(|| mdr_impact::solve(impact, &opts)))?;
+        let bodies = impact
+            .bodies()
+            .map(|b| b.rebound_velocities(impact.velocity(), outcome.cor));
+        Ok(ImpactResult { outcome, bodies })
+    }
+
+    /// Impact velocity (m/s; relative normal velocity for two bodies).
+    #[getter]
+    fn velocity(&self) -> f64 {
+        self.inner.impact.velocity()
+    }
+    /// The sphere (for two bodies: the effective sphere, `m_A m_B / (m_A + m_B)`,
+    /// `R_A R_B / (R_A + R_B)`).
+    #[getter]
+    fn sphere(&self) -> Sphere {
+        Sphere {
+            inner: self.inner.impact.sphere(),
+        }
+    }
+    /// The half-space material (`Material` or `GeneralMaterial`), `None` for two bodies.
+    #[getter]
+    fn material(&self, py: Python<'_>) -> PyResult<Option<Py<PyAny>>> {
+        match self.inner.impact.material() {
+            ImpactMaterial::StandardSolid(m) => {
+                material_object(py, &BodyMaterial::StandardSolid(*m))
+            }
+            ImpactMaterial::General(m) => material_object(py, &BodyMaterial::General(m.clone())),
+            ImpactMaterial::TwoBodies(_) => Ok(None),
+        }
+    }
+    /// The two bodies `(a, b)` of a collision, else `None`.
+    #[getter]
+    fn bodies(&self) -> Option<(Body, Body)> {
+        self.inner.impact.bodies().map(|b| {
+            (
+                Body {
+                    inner: b.a().clone(),
+                },
+                Body {
+                    inner: b.b().clone(),
+                },
+            )
+        })
+    }
+    /// The solver's name.
+    #[getter]
+    fn solver(&self) -> &'static str {
+        self.inner.options.solver.name()
+    }
+    /// Requested relative accuracy of the CoR.
+    #[getter]
+    fn rtol(&self) -> f64 {
+        self.inner.options.rtol
+    }
+    /// Explicit MDR resolution `(elements, steps)`, else `None`.
+    #[getter]
+    fn resolution(&self) -> Option<(usize, usize)> {
+        self.inner.options.resolution.map(|r| (r.elements, r.steps))
+    }
+    /// The `[output] history` path, else `None`.
+    #[getter]
+    fn history(&self) -> Option<PathBuf> {
+        self.inner.history_csv.clone()
+    }
+    /// The `[output] plot` path, else `None`.
+    #[getter]
+    fn plot(&self) -> Option<PathBuf> {
+        self.inner.plot.clone()
+    }
+    /// The dimensionless groups `(nu, p2, p3)` of Eq. (11) (standard solid only), else `None`.
+    #[getter]
+    fn groups(&self) -> Option<(f64, f64, f64)> {
+        self.inner.impact.groups().map(|g| (g.nu, g.p2, g.p3))
+    }
+    /// `G_eq(t)` of the half-space (`G_tot` for two bodies) as a `Prony` (Pa, s).
+    fn equivalent_relaxation(&self) -> Prony {
+        Prony::of(self.inner.impact.equivalent_relaxation())
+    }
+    fn __repr__(&self) -> String {
+        format!("Scene.from_toml({:?})", self.inner.to_toml())
+    }
+}
+
+// ------------------------------------------------------------------------------------------
+// Results
+// ------------------------------------------------------------------------------------------
+
+/// The outcome of one impact (SI units): `cor`, `rebound_velocity` (m/s), `contact_time` (s),
+/// `max_indentation` (m), `time_of_max_indentation` (s), `max_force` (N), `max_contact_radius`
+/// (m), `dissipated_energy` (J), `solver`, `estimated_rel_error` (`None` when the solver gives
+/// none), `fallback` (why `auto` did not answer with `fast`, else `None`), `work` (dict),
+/// `history` (dict of arrays `t`, `d`, `v`, `force`, `a` when asked, else `None`) and, for two
+/// bodies, `bodies` (`{"a": v_A, "b": v_B}`, m/s, velocities after the impact in the frame where B
+/// was at rest).
+#[pyclass(frozen, module = "mdr_impact")]
+struct ImpactResult {
+    outcome: Outcome,
+    bodies: Option<(f64, f64)>,
+}
+
+#[pymethods]
+impl ImpactResult {
+    /// Coefficient of restitution `e = -v_end / v0` (Eq. 10).
+    #[getter]
+    fn cor(&self) -> f64 {
+        self.outcome.cor
+    }
+    /// Rebound velocity at separation (m/s).
+    #[getter]
+    fn rebound_velocity(&self) -> f64 {
+        self.outcome.rebound_velocity
+    }
+    /// Contact duration (s).
+    #[getter]
+    fn contact_time(&self) -> f64 {
+        self.outcome.contact_time
+    }
+    /// Maximum indentation (m; the total compression of both bodies for two).
+    #[getter]
+    fn max_indentation(&self) -> f64 {
+        self.outcome.max_indentation
+    }
+    /// Time of maximum indentation (s).
+    #[getter]
+    fn time_of_max_indentation(&self) -> f64 {
+        self.outcome.time_of_max_indentation
+    }
+    /// Maximum contact force (N).
+    #[getter]
+    fn max_force(&self) -> f64 {
+        self.outcome.max_force
+    }
+    /// Maximum contact radius (m).
+    #[getter]
+    fn max_contact_radius(&self) -> f64 {
+        self.outcome.max_contact_radius
+    }
+    /// Dissipated energy `m (v0^2 - v^2) / 2` (J).
+    #[getter]
+    fn dissipated_energy(&self) -> f64 {
+        self.outcome.dissipated_energy
+    }
+    /// Estimated relative error of the CoR, `None` when the solver gives none.
+    #[getter]
+    fn estimated_rel_error(&self) -> Option<f64> {
+        self.outcome.cor_error_estimate
+    }
+    /// The solver that answered.
+    #[getter]
+    fn solver(&self) -> &'static str {
+        self.outcome.solver
+    }
+    /// Why `auto` answered with `reference` instead of `fast`, else `None`.
+    #[getter]
+    fn fallback(&self) -> Option<String> {
+        self.outcome.fallback.clone()
+    }
+    /// Work counters: `steps`, `elements`, `element_updates`, `evaluations`, `levels`.
+    #[getter]
+    fn work<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let w = self.outcome.work;
+        let d = PyDict::new(py);
+        d.set_item("steps", w.steps)?;
+        d.set_item("elements", w.elements)?;
+        d.set_item("element_updates", w.element_updates)?;
+        d.set_item("evaluations", w.evaluations)?;
+        d.set_item("levels", w.levels)?;
+        Ok(d)
+    }
+    /// Histories (SI): dict of arrays `t` (s), `d` (m), `v` (m/s), `force` (N), `a` (m), when
+    /// asked (`run(history=True)`), else `None`.
+    #[getter]
+    fn history<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(h) = &self.outcome.history else {
+            return Ok(None);
+        };
+        let d = PyDict::new(py);
+        let History {
+            t,
+            d: depth,
+            v,
+            force,
+            a,
+        } = h;
+        for (k, x) in [("t", t), ("d", depth), ("v", v), ("force", force), ("a", a)] {
+            d.set_item(k, PyArray1::from_slice(py, x))?;
+        }
+        Ok(Some(d))
+    }
+    /// Two bodies: `{"a": v_A, "b": v_B}` (m/s) after the impact, else `None`.
+    #[getter]
+    fn bodies<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some((va, vb)) = self.bodies else {
+            return Ok(None);
+        };
+        let d = PyDict::new(py);
+        d.set_item("a", va)?;
+        d.set_item("b", vb)?;
+        Ok(Some(d))
+    }
+    fn __repr__(&self) -> String {
+        let o = &self.outcome;
+        format!(
+            "ImpactResult(cor={:?}, contact_time={:?} s, max_force={:?} N, solver={:?})",
+            o.cor, o.contact_time, o.max_force, o.solver
+        )
+    }
+}
+
+/// CoR and contact time, maximum force and maximum compression (SI) of `scene` at the flat
+/// velocities `v0` (m/s) broadcast from `shape`, in parallel with the GIL released: the rows of
+/// `mdr-impact curve`. Returns a dict of arrays of `shape` (keys `v0`, `cor`, `contact_time`,
+/// `max_force`, `max_compression`) and the curve's limits.
+#[pyfunction]
+fn curve_values<'py>(
+    py: Python<'py>,
+    scene: PyRef<'py, Scene>,
+    v0: PyReadonlyArray1<'py, f64>,
+    shape: Vec<usize>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let v0 = v0.to_vec()?;
+    if v0.len() != shape.iter().product::<usize>() {
+        return Err(usage(format!(
+            "{} velocities do not fill the shape {shape:?}",
+            v0.len()
+        )));
+    }
+    let s = &scene.inner;
+    let rows = py
+        .detach(|| curve::run_velocities(&s.impact, &s.options, &v0, &|| {}))
+        .map_err(|(i, e)| element_err(i, &shape, e))?;
+    let d = PyDict::new(py);
+    let col = |f: fn(&curve::CurveRow) -> f64| rows.iter().map(f).collect::<Vec<f64>>();
+    d.set_item("v0", array(py, v0.clone(), &shape)?)?;
+    d.set_item("cor", array(py, col(|r| r.cor), &shape)?)?;
+    d.set_item("contact_time", array(py, col(|r| r.contact_time), &shape)?)?;
+    d.set_item("max_force", array(py, col(|r| r.max_force), &shape)?)?;
+    d.set_item(
+        "max_compression",
+        array(py, col(|r| r.max_compression), &shape)?,
+    )?;
+    let l = curve::limits(&s.impact);
+    let limits = PyDict::new(py);
+    limits.set_item("relaxed_modulus", l.relaxed_modulus)?;
+    limits.set_item("glassy_modulus", l.glassy_modulus)?;
+    limits.set_item("p3_unit_velocity", l.p3_unit_velocity)?;
+    limits.set_item("slowest_tau", l.slowest_tau)?;
+    limits.set_item("fastest_tau", l.fastest_tau)?;
+    limits.set_item("relaxed_crossover", l.relaxed_crossover)?;
+    limits.set_item("glassy_crossover", l.glassy_crossover)?;
+    d.set_item("limits", limits)?;
+    Ok(d)
+}
+
+#[pymodule]
+fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("Error", m.py().get_type::<Error>())?;
+    m.add("DEFAULT_RTOL", tolerances::DEFAULT_RTOL)?;
+    m.add("MIN_RTOL", tolerances::MIN_RTOL)?;
+    m.add("MAX_RTOL", tolerances::MAX_RTOL)?;
+    m.add("SOLVERS", SolverKind::NAMES.to_vec())?;
+    m.add("DEFAULT_SCENE", mdr_impact::scene::DEFAULT_SCENE)?;
+    m.add_function(wrap_pyfunction!(cor_groups, m)?)?;
+    m.add_function(wrap_pyfunction!(curve_values, m)?)?;
+    m.add_function(wrap_pyfunction!(catalogue_impacts, m)?)?;
+    m.add_class::<Prony>()?;
+    m.add_class::<Material>()?;
+    m.add_class::<GeneralMaterial>()?;
+    m.add_class::<Sphere>()?;
+    m.add_class::<Body>()?;
+    m.add_class::<Scene>()?;
+    m.add_class::<ImpactResult>()?;
+    Ok(())
+}
