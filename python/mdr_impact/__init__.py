@@ -25,7 +25,7 @@ Example
 -------
 >>> import mdr_impact as mi
 >>> round(mi.Scene.default().run().cor, 4)
-0.8376
+0.4094
 """
 
 from __future__ import annotations
@@ -140,7 +140,7 @@ def cor(nu, p2, p3, rtol=DEFAULT_RTOL, solver="auto", full_output=False):
 
 
 def impact(target, *, velocity=None, mass=None, radius=None, solver=None, rtol=None,
-           history=False):
+           history=None):
     """One impact: CoR, contact time, maximum force and the rest, optionally with histories.
 
     Parameters
@@ -158,7 +158,11 @@ def impact(target, *, velocity=None, mass=None, radius=None, solver=None, rtol=N
     rtol : float, optional
         Requested relative accuracy of the CoR (default ``1e-6``); replaces a scene's.
     history : bool, optional
-        Also return the histories ``t, d, v, force, a`` as numpy arrays (SI).
+        Also return the histories ``t, d, v, force, a`` as numpy arrays (SI). The default
+        ``None`` returns them when the scene has ``[output]`` paths (as ``mdr-impact run``
+        computes them then; with ``solver="auto"`` they are then sampled from the reference
+        solution, so the CoR can differ from a CoR-only solve within ``rtol``), never for a
+        material.
 
     Returns
     -------
@@ -178,7 +182,7 @@ def impact(target, *, velocity=None, mass=None, radius=None, solver=None, rtol=N
     >>> import mdr_impact as mi
     >>> m = mi.Material(1.0e6, 1.0e7, 500.0, poisson=0.49)
     >>> r = mi.impact(m, mass=4.11e-3, radius=5.0e-3, velocity=0.99)
-    >>> r.cor == mi.Scene.default().run().cor
+    >>> r.cor == mi.Scene.default().run(history=False).cor
     True
     """
     if isinstance(target, Scene):
@@ -199,6 +203,7 @@ def impact(target, *, velocity=None, mass=None, radius=None, solver=None, rtol=N
             solver="auto" if solver is None else solver,
             rtol=DEFAULT_RTOL if rtol is None else rtol,
         )
+        history = bool(history)
     return scene.run(history=history)
 
 
@@ -271,8 +276,8 @@ def curve(scene, v0):
     --------
     >>> import numpy as np, mdr_impact as mi
     >>> c = mi.curve(mi.Scene.default(), np.logspace(-2, 1, 50))
-    >>> bool(c.cor.min() > 0.5)
-    True
+    >>> c.cor.shape, bool(np.all((c.cor > 0) & (c.cor < 1)))
+    ((50,), True)
     """
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a Scene, not {type(scene).__name__}")

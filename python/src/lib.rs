@@ -741,11 +741,13 @@ impl Scene {
         Ok(Self { inner })
     }
 
-    /// Solve the impact (GIL released); with `history=True` the result carries the histories.
-    #[pyo3(signature = (history = false))]
-    fn run(&self, py: Python<'_>, history: bool) -> PyResult<ImpactResult> {
+    /// Solve the impact (GIL released), as `mdr-impact run` does; the result carries the
+    /// histories with `history=True`, or with `history=None` (default) when the scene has
+    /// `[output]` paths (which is what makes `run` compute them too).
+    #[pyo3(signature = (history = None))]
+    fn run(&self, py: Python<'_>, history: Option<bool>) -> PyResult<ImpactResult> {
         let opts = SolveOptions {
-            history,
+            history: history.unwrap_or(self.inner.options.history),
             ..self.inner.options
         };
         let impact = &self.inner.impact;

@@ -1,0 +1,101 @@
+"""The package answers exactly what the command line answers (the same library underneath)."""
+
+import csv
+import io
+import json
+
+import numpy as np
+import pytest
+
+import mdr_impact as mi
+
+
+def _csv_rows(text):
+    return list(csv.DictReader(io.StringIO(text)))
+
+
+def test_catalogue_cor_input_bit_for_bit(cli, tmp_path):
+    cases = mi.catalogue()
+    assert len(cases) > 0
+    path = tmp_path / "groups.csv"
+    path.write_text("nu,p2,p3\n" + "".join(f"{c['nu']!r},{c['p2']!r},{c['p3']!r}\n"
+                                           for c in cases))
+    rows = _csv_rows(cli("cor", "--input", path).stdout)
+    assert len(rows) == len(cases)
+    nu, p2, p3 = (np.array([c[k] for c in cases]) for k in ("nu", "p2", "p3"))
+    e, t, d = mi.cor(nu, p2, p3, full_output=True)
+    for i, r in enumerate(rows):
+        assert float(r["cor"]) == e[i], cases[i]["id"]
+        assert float(r["contact_time"]) == t[i], cases[i]["id"]
+        assert float(r["max_indentation"]) == d[i], cases[i]["id"]
+
+
+@pytest.mark.parametrize("solver,rtol", [("auto", 1e-6), ("fast", 1e-9), ("reference", 1e-6),
+                                         ("mdr", 1e-3)])
+def test_single_cor_matches_cli(cli, solver, rtol):
+    for c in mi.catalogue()[3:6]:
+        out = cli("cor", "--nu", c["nu"], "--p2", c["p2"], "--p3", c["p3"], "--solver", solver,
+                  "--rtol", rtol).stdout
+        assert float(out.strip().splitlines()[-1]) == mi.cor(c["nu"], c["p2"], c["p3"],
+                                                             rtol=rtol, solver=solver)
+
+
+def _same_outcome(js, r):
+    for key in ("cor", "rebound_velocity", "contact_time", "max_indentation",
+                "time_of_max_indentation", "max_force", "max_contact_radius",
+                "dissipated_energy", "solver", "fallback"):
+        assert js[key] == getattr(r, key), key
+    assert js["estimated_rel_error"] == r.estimated_rel_error
+    assert js["work"] == r.work
+
+
+def test_default_scene_matches_run_json(cli):
+    js = json.loads(cli("run", "--json").stdout)
+    _same_outcome(js, mi.Scene.default().run())
+
+
+def test_two_body_scene_matches_run_json(cli, root):
+    path = root / "scenes" / "two_spheres.toml"
+    js = json.loads(cli("run", path, "--json").stdout)
+    r = mi.Scene.load(path).run()
+    _same_outcome(js, r)
+    assert js["bodies"] == {"a": {"rebound_velocity": r.bodies["a"]},
+                            "b": {"rebound_velocity": r.bodies["b"]}}
+
+
+def test_curve_matches_cli(cli, tmp_path):
+    cli("curve", "--v0", "0.01:10:7", "--log", "--out", tmp_path)
+    rows = _csv_rows((tmp_path / "curve.csv").read_text())
+    v0 = np.array([float(r["v0"]) for r in rows])
+    c = mi.curve(mi.Scene.default(), v0)
+    for key in ("cor", "contact_time", "max_force", "max_compression"):
+        assert np.array_equal(np.array([float(r[key]) for r in rows]), getattr(c, key)), key
+
+
+@pytest.mark.parametrize("args,call", [
+    (("cor", "--nu", "0.7", "--p2", "1", "--p3", "1"), lambda: mi.cor(0.7, 1, 1)),
+    (("cor", "--nu", "0.3", "--p2", "-1", "--p3", "1"), lambda: mi.cor(0.3, -1, 1)),
+    (("cor", "--nu", "0.3", "--p2", "1", "--p3", "1", "--rtol", "0"),
+     lambda: mi.cor(0.3, 1, 1, rtol=0)),
+    (("cor", "--nu", "0.3", "--p2", "1", "--p3", "1", "--solver", "euler"),
+     lambda: mi.cor(0.3, 1, 1, solver="euler")),
+])
+def test_error_messages_equal_cli(cli, args, call):
+    p = cli(*args, check=False)
+    assert p.returncode == 1
+    with pytest.raises(mi.Error) as err:
+        call()
+    assert p.stderr.strip() == f"error: {err.value}"
+
+
+def test_scene_error_messages_equal_cli(cli, tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text(mi.DEFAULT_SCENE.replace("eta = 500.0", "eta = -1.0"))
+    unknown = tmp_path / "unknown.toml"
+    unknown.write_text(mi.DEFAULT_SCENE + "\n[extra]\nkey = 1\n")
+    for path in (bad, unknown, tmp_path / "missing.toml"):
+        p = cli("run", path, check=False)
+        assert p.returncode == 1
+        with pytest.raises(mi.Error) as err:
+            mi.Scene.load(path)
+        assert p.stderr.strip() == f"error: {err.value}"
