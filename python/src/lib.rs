@@ -755,7 +755,7 @@ impl Scene {
         let bodies = impact
             .bodies()
             .map(|b| b.rebound_velocities(impact.velocity(), outcome.cor));
-        Ok(ImpactResult { outcome, bodies })
+        Ok(ImpactResult::new(outcome, bodies))
     }
 
     /// Impact velocity (m/s; relative normal velocity for two bodies).
@@ -848,71 +848,71 @@ impl Scene {
 /// was at rest).
 #[pyclass(frozen, module = "mdr_impact")]
 struct ImpactResult {
-    outcome: Outcome,
-    bodies: Option<(f64, f64)>,
+    /// Coefficient of restitution `e = -v_end / v0` (Eq. 10).
+    #[pyo3(get)]
+    cor: f64,
+    /// Rebound velocity at separation (m/s).
+    #[pyo3(get)]
+    rebound_velocity: f64,
+    /// Contact duration (s).
+    #[pyo3(get)]
+    contact_time: f64,
+    /// Maximum indentation (m; the total compression of both bodies for two).
+    #[pyo3(get)]
+    max_indentation: f64,
+    /// Time of maximum indentation (s).
+    #[pyo3(get)]
+    time_of_max_indentation: f64,
+    /// Maximum contact force (N).
+    #[pyo3(get)]
+    max_force: f64,
+    /// Maximum contact radius (m).
+    #[pyo3(get)]
+    max_contact_radius: f64,
+    /// Dissipated energy `m (v0^2 - v^2) / 2` (J).
+    #[pyo3(get)]
+    dissipated_energy: f64,
+    /// Estimated relative error of the CoR, `None` when the solver gives none.
+    #[pyo3(get)]
+    estimated_rel_error: Option<f64>,
+    /// The solver that answered.
+    #[pyo3(get)]
+    solver: &'static str,
+    /// Why `auto` answered with `reference` instead of `fast`, else `None`.
+    #[pyo3(get)]
+    fallback: Option<String>,
+    work: mdr_impact::Work,
+    histories: Option<History>,
+    velocities: Option<(f64, f64)>,
+}
+
+impl ImpactResult {
+    fn new(o: Outcome, velocities: Option<(f64, f64)>) -> Self {
+        Self {
+            cor: o.cor,
+            rebound_velocity: o.rebound_velocity,
+            contact_time: o.contact_time,
+            max_indentation: o.max_indentation,
+            time_of_max_indentation: o.time_of_max_indentation,
+            max_force: o.max_force,
+            max_contact_radius: o.max_contact_radius,
+            dissipated_energy: o.dissipated_energy,
+            estimated_rel_error: o.cor_error_estimate,
+            solver: o.solver,
+            fallback: o.fallback,
+            work: o.work,
+            histories: o.history,
+            velocities,
+        }
+    }
 }
 
 #[pymethods]
 impl ImpactResult {
-    /// Coefficient of restitution `e = -v_end / v0` (Eq. 10).
-    #[getter]
-    fn cor(&self) -> f64 {
-        self.outcome.cor
-    }
-    /// Rebound velocity at separation (m/s).
-    #[getter]
-    fn rebound_velocity(&self) -> f64 {
-        self.outcome.rebound_velocity
-    }
-    /// Contact duration (s).
-    #[getter]
-    fn contact_time(&self) -> f64 {
-        self.outcome.contact_time
-    }
-    /// Maximum indentation (m; the total compression of both bodies for two).
-    #[getter]
-    fn max_indentation(&self) -> f64 {
-        self.outcome.max_indentation
-    }
-    /// Time of maximum indentation (s).
-    #[getter]
-    fn time_of_max_indentation(&self) -> f64 {
-        self.outcome.time_of_max_indentation
-    }
-    /// Maximum contact force (N).
-    #[getter]
-    fn max_force(&self) -> f64 {
-        self.outcome.max_force
-    }
-    /// Maximum contact radius (m).
-    #[getter]
-    fn max_contact_radius(&self) -> f64 {
-        self.outcome.max_contact_radius
-    }
-    /// Dissipated energy `m (v0^2 - v^2) / 2` (J).
-    #[getter]
-    fn dissipated_energy(&self) -> f64 {
-        self.outcome.dissipated_energy
-    }
-    /// Estimated relative error of the CoR, `None` when the solver gives none.
-    #[getter]
-    fn estimated_rel_error(&self) -> Option<f64> {
-        self.outcome.cor_error_estimate
-    }
-    /// The solver that answered.
-    #[getter]
-    fn solver(&self) -> &'static str {
-        self.outcome.solver
-    }
-    /// Why `auto` answered with `reference` instead of `fast`, else `None`.
-    #[getter]
-    fn fallback(&self) -> Option<String> {
-        self.outcome.fallback.clone()
-    }
     /// Work counters: `steps`, `elements`, `element_updates`, `evaluations`, `levels`.
     #[getter]
     fn work<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let w = self.outcome.work;
+        let w = self.work;
         let d = PyDict::new(py);
         d.set_item("steps", w.steps)?;
         d.set_item("elements", w.elements)?;
@@ -925,7 +925,7 @@ impl ImpactResult {
     /// asked (`run(history=True)`), else `None`.
     #[getter]
     fn history<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
-        let Some(h) = &self.outcome.history else {
+        let Some(h) = &self.histories else {
             return Ok(None);
         };
         let d = PyDict::new(py);
@@ -944,7 +944,7 @@ impl ImpactResult {
     /// Two bodies: `{"a": v_A, "b": v_B}` (m/s) after the impact, else `None`.
     #[getter]
     fn bodies<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
-        let Some((va, vb)) = self.bodies else {
+        let Some((va, vb)) = self.velocities else {
             return Ok(None);
         };
         let d = PyDict::new(py);
@@ -953,10 +953,9 @@ impl ImpactResult {
         Ok(Some(d))
     }
     fn __repr__(&self) -> String {
-        let o = &self.outcome;
         format!(
             "ImpactResult(cor={:?}, contact_time={:?} s, max_force={:?} N, solver={:?})",
-            o.cor, o.contact_time, o.max_force, o.solver
+            self.cor, self.contact_time, self.max_force, self.solver
         )
     }
 }
