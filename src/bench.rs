@@ -1035,17 +1035,17 @@ pub struct GeneralTiming {
 /// Time `fast` (CoR only, one core, rtol 1e-6) on every general-material case: the median over
 /// repeats within `budget` seconds per case.
 pub fn general_timing(budget: f64) -> Result<Vec<GeneralTiming>> {
-    crate::catalogue::GENERAL
+    crate::catalogue::general_entries()?
         .iter()
         .map(|case| {
-            let imp = case.impact()?;
+            let imp = &case.impact;
             let opts = SolveOptions {
                 solver: SolverKind::Fast,
                 rtol: TIMING_RTOLS[0],
                 ..Default::default()
             };
-            let out = solve(&imp, &opts)?;
-            let (seconds, _) = median_time(budget, || solve(&imp, &opts).map(|_| ()))?;
+            let out = solve(imp, &opts)?;
+            let (seconds, _) = median_time(budget, || solve(imp, &opts).map(|_| ()))?;
             let p = imp.canonical_relaxation();
             let (unreduced_seconds, _) = median_time(budget, || {
                 crate::fast::impact_unreduced(&p, opts.rtol, false).map(|_| ())
