@@ -488,10 +488,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 Vec::new()
             } else {
                 let g = bench::general_timing(budget)?;
-                let random = timed
-                    .iter()
-                    .find(|(k, _)| *k == bench::TimedRows::Random)
-                    .map(|(_, r)| r.as_slice());
+                let random = bench::random_rows_of(&timed);
                 println!("{}", bench::general_timing_table(&g, random));
                 g
             };
@@ -523,7 +520,16 @@ fn run(cli: Cli) -> Result<(), Error> {
                 println!("curve --v0 0.01:10:200 --log (default scene): {secs:.3} s");
             }
             if !timed.is_empty() {
-                print!("{}", bench::targets(&timed, bench::speedup(&points), batch));
+                let random = bench::random_rows_of(&timed);
+                print!(
+                    "{}",
+                    bench::targets(
+                        &timed,
+                        bench::speedup(&points),
+                        batch,
+                        &bench::general_targets(&general, random)
+                    )
+                );
             }
             if !quick {
                 let existing =
