@@ -824,8 +824,8 @@ pub fn general_table() -> Result<Table> {
                 rtol,
                 ..Default::default()
             };
-            let truth = solve(&imp, &opts(SolverKind::Reference, 1e-10))?.cor;
-            let err = |solver, rtol| match solve(&imp, &opts(solver, rtol)) {
+            let truth = solve(imp, &opts(SolverKind::Reference, 1e-10))?.cor;
+            let err = |solver, rtol| match solve(imp, &opts(solver, rtol)) {
                 Ok(o) => fmt_err((o.cor - truth) / truth),
                 Err(e) => format!("refused: {}", short_error(&e.to_string())),
             };
