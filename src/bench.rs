@@ -292,10 +292,7 @@ pub fn summary(
         s.push_str(&timing_table(rows, *kind));
     }
     if !general.is_empty() {
-        let random = timed
-            .iter()
-            .find(|(k, _)| *k == TimedRows::Random)
-            .map(|(_, r)| r.as_slice());
+        let random = random_rows_of(timed);
         let _ = writeln!(
             s,
             "\n`fast` at rtol 1e-6 on the general materials of VALIDATION.md section 1c (one core, \
@@ -312,8 +309,14 @@ pub fn summary(
         );
     }
     if !timed.is_empty() {
+        let random = random_rows_of(timed);
         s.push('\n');
-        s.push_str(&targets(timed, speedup(points), batch));
+        s.push_str(&targets(
+            timed,
+            speedup(points),
+            batch,
+            &general_targets(general, random),
+        ));
     }
     s
 }
@@ -356,6 +359,7 @@ pub fn targets(
     timed: &[(TimedRows, Vec<RowTiming>)],
     speedup: Option<f64>,
     batch: Option<(usize, f64)>,
+    general: &[String],
 ) -> String {
     let mut parts = Vec::new();
     for (kind, rows) in timed {
@@ -402,6 +406,7 @@ pub fn targets(
             ));
         }
     }
+    parts.extend(general.iter().cloned());
     let mut s = String::from("Design targets of `fast`, checked in this run:\n\n");
     for p in parts {
         let _ = writeln!(s, "- {p}.");
@@ -920,6 +925,44 @@ mod tests {
             .to_string()
     }
 
+    /// The 3x target applies to the real polymers of at least 30 terms only, each against the
+    /// standard solid of its own CoR group, and lands in the target list.
+    #[test]
+    fn general_targets_compare_polymers_with_their_group() {
+        let g = |id: &'static str, terms, cor, seconds| GeneralTiming {
+            id,
+            terms,
+            cor,
+            seconds,
+            steps: 40,
+            evaluations: 300,
+            unreduced_seconds: 2.0 * seconds,
+        };
+        let rows = [
+            g("polyisobutylene", 30, 0.28, 25e-6),
+            g("epoxy", 24, 0.94, 90e-6),
+            g("prony-30-incompressible", 30, 0.87, 90e-6),
+        ];
+        let random = [
+            timing(0.5, [10, 40], [60, 300]),
+            timing(0.95, [10, 40], [60, 300]),
+        ];
+        let t = general_targets(&rows, Some(&random));
+        assert_eq!(t.len(), 1, "{t:?}");
+        assert!(t[0].contains("`polyisobutylene`"), "{}", t[0]);
+        assert!(
+            t[0].contains(": met (2.5x: 25.0 µs against 10.0 µs)"),
+            "{}",
+            t[0]
+        );
+        let slow = [g("polyisobutylene", 30, 0.28, 35e-6)];
+        let t = general_targets(&slow, Some(&random));
+        assert!(t[0].contains("**not met** (3.5x"), "{}", t[0]);
+        assert!(general_targets(&rows, None).is_empty());
+        let text = targets(&[], None, None, &t);
+        assert!(text.contains("- the 30-term real polymer"), "{text}");
+    }
+
     #[test]
     fn targets_name_the_groups_that_miss_them() {
         let mut slow = timing(0.05, [30, 90], [200, 700]);
@@ -929,6 +972,7 @@ mod tests {
             &[(TimedRows::External, rows.to_vec())],
             Some(3250.0),
             Some((100_000, 1.01)),
+            &[],
         );
         // all rows: median of 10 µs and 40 µs is the upper one (40 µs)
         assert!(
@@ -953,6 +997,7 @@ mod tests {
             ],
             Some(900.0),
             Some((1000, 0.1)),
+            &[],
         );
         assert!(
             text.contains(
@@ -1035,17 +1080,17 @@ pub struct GeneralTiming {
 /// Time `fast` (CoR only, one core, rtol 1e-6) on every general-material case: the median over
 /// repeats within `budget` seconds per case.
 pub fn general_timing(budget: f64) -> Result<Vec<GeneralTiming>> {
-    crate::catalogue::GENERAL
+    crate::catalogue::general_entries()?
         .iter()
         .map(|case| {
-            let imp = case.impact()?;
+            let imp = &case.impact;
             let opts = SolveOptions {
                 solver: SolverKind::Fast,
                 rtol: TIMING_RTOLS[0],
                 ..Default::default()
             };
-            let out = solve(&imp, &opts)?;
-            let (seconds, _) = median_time(budget, || solve(&imp, &opts).map(|_| ()))?;
+            let out = solve(imp, &opts)?;
+            let (seconds, _) = median_time(budget, || solve(imp, &opts).map(|_| ()))?;
             let p = imp.canonical_relaxation();
             let (unreduced_seconds, _) = median_time(budget, || {
                 crate::fast::impact_unreduced(&p, opts.rtol, false).map(|_| ())
@@ -1103,6 +1148,65 @@ pub fn general_euler_text((te, ee, tf, ef): (f64, f64, f64, f64)) -> String {
     )
 }
 
+/// The timed rows of the random sample ([`TimedRows::Random`]) among `timed`, if timed.
+pub fn random_rows_of(timed: &[(TimedRows, Vec<RowTiming>)]) -> Option<&[RowTiming]> {
+    timed
+        .iter()
+        .find(|(k, _)| *k == TimedRows::Random)
+        .map(|(_, r)| r.as_slice())
+}
+
+/// The standard solid of the random sample (`random`) in the CoR group of `r`: the group's
+/// name, median time (s), mean steps and evaluations at rtol 1e-6.
+fn same_group(
+    r: &GeneralTiming,
+    random: Option<&[RowTiming]>,
+) -> Option<(&'static str, f64, f64, f64)> {
+    let (name, member) = cor_groups().into_iter().find(|(_, member)| member(r.cor))?;
+    let sel: Vec<&RowTiming> = random?.iter().filter(|t| member(t.row.cor)).collect();
+    if sel.is_empty() {
+        return None;
+    }
+    let mut v: Vec<f64> = sel.iter().map(|t| t.seconds[0]).collect();
+    v.sort_by(|a, b| a.total_cmp(b));
+    let n = sel.len() as f64;
+    let steps = sel.iter().map(|t| t.steps[0] as f64).sum::<f64>() / n;
+    let evals = sel.iter().map(|t| t.evaluations[0] as f64).sum::<f64>() / n;
+    Some((name, v[v.len() / 2], steps, evals))
+}
+
+/// Design target: `fast` at rtol 1e-6 on a real polymer of at least 30 terms
+/// ([`crate::catalogue::POLYMERS`]) takes at most this multiple of the median time of the
+/// standard solid in the same CoR group.
+pub const TARGET_GENERAL_RATIO: f64 = 3.0;
+
+/// The target [`TARGET_GENERAL_RATIO`] for the real polymers of at least 30 `G_eq` terms among
+/// `rows`, each beside the standard solid of its CoR group in `random` (one list entry per
+/// polymer; none without the random sample).
+pub fn general_targets(rows: &[GeneralTiming], random: Option<&[RowTiming]>) -> Vec<String> {
+    rows.iter()
+        .filter(|r| r.terms >= 30 && crate::catalogue::POLYMERS.iter().any(|p| p.id == r.id))
+        .filter_map(|r| {
+            let (name, t, _, _) = same_group(r, random)?;
+            let x = r.seconds / t;
+            let verdict = if x <= TARGET_GENERAL_RATIO {
+                "met"
+            } else {
+                "**not met**"
+            };
+            Some(format!(
+                "the {}-term real polymer `{}` at rtol 1e-6 in at most {TARGET_GENERAL_RATIO:.0}x the \
+                 median time of the standard solid in its CoR group ({name}): {verdict} ({x:.1}x: {} \
+                 against {})",
+                r.terms,
+                r.id,
+                fmt_time(r.seconds),
+                fmt_time(t)
+            ))
+        })
+        .collect()
+}
+
 /// Markdown table of [`general_timing`], each case beside the standard solid of the random
 /// sample in the same CoR group (`random`: the rows of [`TimedRows::Random`], if timed), with
 /// the ratio of the median times.
@@ -1112,22 +1216,7 @@ pub fn general_timing_table(rows: &[GeneralTiming], random: Option<&[RowTiming]>
          | --- | --- | --- | --- | --- | --- | --- | --- |\n",
     );
     for r in rows {
-        let same = cor_groups()
-            .into_iter()
-            .find(|(_, member)| member(r.cor))
-            .and_then(|(name, member)| {
-                let sel: Vec<&RowTiming> = random?.iter().filter(|t| member(t.row.cor)).collect();
-                if sel.is_empty() {
-                    return None;
-                }
-                let mut v: Vec<f64> = sel.iter().map(|t| t.seconds[0]).collect();
-                v.sort_by(|a, b| a.total_cmp(b));
-                let n = sel.len() as f64;
-                let steps = sel.iter().map(|t| t.steps[0] as f64).sum::<f64>() / n;
-                let evals = sel.iter().map(|t| t.evaluations[0] as f64).sum::<f64>() / n;
-                Some((name, v[v.len() / 2], steps, evals))
-            });
-        let (std_text, ratio) = match same {
+        let (std_text, ratio) = match same_group(r, random) {
             Some((name, t, steps, evals)) => (
                 format!("{name}: {}, {steps:.1} / {evals:.0}", fmt_time(t)),
                 format!("{:.1}", r.seconds / t),

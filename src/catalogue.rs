@@ -238,6 +238,102 @@ pub const GENERAL: &[GeneralCase] = &[
     },
 ];
 
+/// A real polymer given as a published Prony series: a scene of `scenes/` (its header line
+/// cites the source), with the default scene's steel ball at 0.99 m/s.
+#[derive(Debug, Clone, Copy)]
+pub struct PolymerCase {
+    /// Short identifier.
+    pub id: &'static str,
+    /// What it stands for.
+    pub what: &'static str,
+    /// File name of the scene in `scenes/`.
+    pub scene: &'static str,
+}
+
+impl PolymerCase {
+    /// Path of the scene in the source tree.
+    pub fn path(&self) -> std::path::PathBuf {
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("scenes")
+            .join(self.scene)
+    }
+    /// The impact of the scene.
+    pub fn impact(&self) -> Result<Impact> {
+        Ok(crate::scene::Scene::load(&self.path())?.impact)
+    }
+}
+
+/// The real polymers: a rubber (30 shear terms over 18 decades) and a glassy polymer (24
+/// terms over 12 decades), both shipped as scenes.
+pub const POLYMERS: &[PolymerCase] = &[
+    PolymerCase {
+        id: "polyisobutylene",
+        what: "rubber: polyisobutylene, 30 shear terms (Brinson & Brinson), incompressible",
+        scene: "polyisobutylene.toml",
+    },
+    PolymerCase {
+        id: "epoxy",
+        what: "glassy polymer: cured epoxy, 24 shear terms (Simon, McKenna & Sindt 2000), incompressible",
+        scene: "epoxy.toml",
+    },
+];
+
+/// One general-material entry of the validation and the bench: a synthetic case of
+/// [`GENERAL`] (unit sphere at unit speed) or a real polymer of [`POLYMERS`] (SI scene).
+#[derive(Debug, Clone)]
+pub struct GeneralEntry {
+    /// Short identifier.
+    pub id: &'static str,
+    /// What it stands for.
+    pub what: &'static str,
+    /// The material.
+    pub material: GeneralMaterial,
+    /// The impact.
+    pub impact: Impact,
+}
+
+impl GeneralEntry {
+    /// Shortest and longest relaxation time of shear and bulk (s).
+    pub fn time_range(&self) -> (f64, f64) {
+        let shear = self.material.shear().terms().iter().map(|t| t.1);
+        let bulk: Vec<f64> = match self.material.bulk() {
+            BulkRheology::Prony(b) => b.terms().iter().map(|t| t.1).collect(),
+            _ => Vec::new(),
+        };
+        shear
+            .chain(bulk)
+            .fold((f64::INFINITY, 0.0_f64), |(lo, hi), t| {
+                (lo.min(t), hi.max(t))
+            })
+    }
+}
+
+/// Every general-material entry: [`GENERAL`], then [`POLYMERS`].
+pub fn general_entries() -> Result<Vec<GeneralEntry>> {
+    let mut out = Vec::new();
+    for case in GENERAL {
+        out.push(GeneralEntry {
+            id: case.id,
+            what: case.what,
+            material: case.material()?,
+            impact: case.impact()?,
+        });
+    }
+    for case in POLYMERS {
+        let impact = case.impact()?;
+        let material = impact.general_material().cloned().ok_or_else(|| {
+            crate::Error::Unsupported(format!("{}: not a general material", case.scene))
+        })?;
+        out.push(GeneralEntry {
+            id: case.id,
+            what: case.what,
+            material,
+            impact,
+        });
+    }
+    Ok(out)
+}
+
 /// A two-body collision case (theory notes §8), SI units: body A, body B, relative velocity.
 #[derive(Debug, Clone, Copy)]
 pub struct TwoBodyCase {

@@ -488,10 +488,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 Vec::new()
             } else {
                 let g = bench::general_timing(budget)?;
-                let random = timed
-                    .iter()
-                    .find(|(k, _)| *k == bench::TimedRows::Random)
-                    .map(|(_, r)| r.as_slice());
+                let random = bench::random_rows_of(&timed);
                 println!("{}", bench::general_timing_table(&g, random));
                 g
             };
@@ -512,8 +509,8 @@ fn run(cli: Cli) -> Result<(), Error> {
             } else {
                 None
             };
-            {
-                // curve over 200 velocities of the default scene (not part of the report)
+            let curve_secs = {
+                // curve over 200 velocities of the default scene
                 use mdr_impact::curve;
                 let scene = Scene::default_scene();
                 let range = curve::VelocityRange::parse("0.01:10:200", true)?;
@@ -521,9 +518,19 @@ fn run(cli: Cli) -> Result<(), Error> {
                 curve::run(&scene.impact, &scene.options, &range, &|| {})?;
                 let secs = t0.elapsed().as_secs_f64();
                 println!("curve --v0 0.01:10:200 --log (default scene): {secs:.3} s");
-            }
+                secs
+            };
             if !timed.is_empty() {
-                print!("{}", bench::targets(&timed, bench::speedup(&points), batch));
+                let random = bench::random_rows_of(&timed);
+                print!(
+                    "{}",
+                    bench::targets(
+                        &timed,
+                        bench::speedup(&points),
+                        batch,
+                        &bench::general_targets(&general, random)
+                    )
+                );
             }
             if !quick {
                 let existing =
@@ -534,6 +541,10 @@ fn run(cli: Cli) -> Result<(), Error> {
                     section.push('\n');
                     section.push_str(&bench::general_euler_text(r));
                 }
+                section.push_str(&format!(
+                    "\n`mdr-impact curve --v0 0.01:10:200 --log` on the default scene (200 \
+                     velocities, all cores): {curve_secs:.3} s.\n"
+                ));
                 let text = validate::replace_performance(&existing, &section)?;
                 output::write_atomic(&report, |w| {
                     w.write_all(text.as_bytes())

@@ -449,3 +449,38 @@ fn run_json_prints_one_object() {
         "{out}"
     );
 }
+
+/// The shipped real polymers (published Prony series, `scenes/polyisobutylene.toml` with its
+/// `tau,modulus` table, `scenes/epoxy.toml` inline) run from any folder, and their `--json` CoR
+/// agrees with `reference` at rtol 1e-10 within the scene's rtol 1e-6.
+#[test]
+fn polymer_scenes_run() {
+    use mdr_impact::{solve, SolveOptions, SolverKind};
+    let dir = tempfile::tempdir().unwrap();
+    for case in mdr_impact::catalogue::POLYMERS {
+        let path = case.path();
+        let o = run(&["run", path.to_str().unwrap(), "--json"], dir.path());
+        assert!(o.status.success(), "{}: {}", case.id, stderr(&o));
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        let cor = v["cor"].as_f64().unwrap();
+        let truth = solve(
+            &case.impact().unwrap(),
+            &SolveOptions {
+                solver: SolverKind::Reference,
+                rtol: 1e-10,
+                ..Default::default()
+            },
+        )
+        .unwrap()
+        .cor;
+        assert!(
+            ((cor - truth) / truth).abs() <= 1e-6,
+            "{}: {cor} vs {truth}",
+            case.id
+        );
+        assert!(v["estimated_rel_error"].as_f64().unwrap() <= 1e-6);
+        let text = run(&["run", path.to_str().unwrap()], dir.path());
+        assert!(text.status.success());
+        assert!(String::from_utf8_lossy(&text.stdout).contains("coefficient of restitution"));
+    }
+}

@@ -1,7 +1,8 @@
 //! The reduction of terms outside the contact window (`fast`, module `reduce`): reduced and
-//! unreduced solves agree to rtol on every general validation case and on random series, and
+//! unreduced solves agree to rtol on every general validation case (the real polymers too) and
+//! on random series, and
 //! the reduced solve's estimate (which includes the reduction's bound) stays within rtol.
-use mdr_impact::catalogue::GENERAL;
+use mdr_impact::catalogue::general_entries;
 use mdr_impact::{fast, Prony, PronyTerm};
 use proptest::prelude::*;
 
@@ -21,8 +22,9 @@ fn check(name: &str, p: &Prony, rtol: f64) -> Result<(usize, f64), TestCaseError
 
 #[test]
 fn reduced_agrees_with_unreduced_on_general_cases() {
-    for case in GENERAL {
-        let p = case.impact().unwrap().canonical_relaxation();
+    // the synthetic cases and the real polymers (scenes/polyisobutylene.toml, scenes/epoxy.toml)
+    for case in general_entries().unwrap() {
+        let p = case.impact.canonical_relaxation();
         for rtol in [1e-4, 1e-6, 1e-8, 1e-10] {
             let (evals, err) = check(case.id, &p, rtol).unwrap();
             println!(

@@ -26,8 +26,12 @@
 //! with `G_eq(T)`, the modulus left at the end of contact, as the force scale.
 //!
 //! # Use
-//! [`solve`] reduces with the elastic Hertz contact times as the first guess of `T` and
-//! `e = 1/2`, solves the reduced series at `(1 - REDUCE_SHARE) rtol`, and checks the bound
+//! [`solve`] first estimates the contact time as the smallest fixed point of
+//! `T = T_H(G_eq(T))`, the elastic Hertz contact time on the modulus left at the end of the
+//! contact ([`contact_time_estimate`]; from the glassy Hertz time upwards, so it never jumps to
+//! the relaxed modulus of a material that is far stiffer during the contact), and reduces with
+//! `2 T` on the slow side, `T / 2` on the fast side (each the conservative side) and `e = 1/2`.
+//! It solves the reduced series at `(1 - REDUCE_SHARE) rtol` and checks the bound
 //! **a posteriori** with the solve's own contact time and CoR: accepted when it is at most
 //! `REDUCE_SHARE rtol` (the reported estimate is the solve's plus the bound, so at most
 //! `rtol`), otherwise reduced again from those values (at most [`REDUCE_ATTEMPTS`] times) and
@@ -84,27 +88,51 @@ fn modulus_at(c_inf: f64, terms: &[(f64, f64)], t: f64) -> f64 {
             .sum::<f64>()
 }
 
-/// The largest reduction of `live` (any order) whose bound for the contact time `t` and CoR
-/// `e` is at most `budget`, half for each side; `None` when nothing can be merged.
+/// Iterations of [`contact_time_estimate`].
+const ESTIMATE_ITERATIONS: usize = 60;
+
+/// The smallest fixed point of `T = T_H(G_eq(T))` (canonical Hertz contact time on the modulus
+/// at the end of the contact), iterated from the glassy Hertz time: the map is increasing in
+/// `T`, so the iterates increase towards it. At most [`ESTIMATE_ITERATIONS`] steps (the last
+/// iterate is returned: it is only a first guess, checked a posteriori).
+pub(super) fn contact_time_estimate(c_inf: f64, live: &[(f64, f64)]) -> f64 {
+    let glassy = c_inf + live.iter().map(|t| t.0).sum::<f64>();
+    let mut t = hertz_time(glassy);
+    for _ in 0..ESTIMATE_ITERATIONS {
+        let next = hertz_time(modulus_at(c_inf, live, t));
+        if (next - t).abs() <= 1e-3 * t {
+            return next;
+        }
+        t = next;
+    }
+    t
+}
+
+/// The largest reduction of `live` (any order) whose bound is at most `budget`, half for each
+/// side: the slow side for the contact time `t_slow`, the fast side for `t_fast` (an upper and
+/// a lower estimate of the contact time; the force scale is `G_eq(t_slow)`) and the CoR `e`;
+/// `None` when nothing can be merged.
 pub(super) fn reduce(
     c_inf: f64,
     live: &[(f64, f64)],
-    t: f64,
+    (t_slow, t_fast): (f64, f64),
     e: f64,
     budget: f64,
 ) -> Option<Reduction> {
     let mut sorted = live.to_vec();
     sorted.sort_by(|a, b| a.1.total_cmp(&b.1));
-    let g_t = modulus_at(c_inf, live, t);
+    let g_t = modulus_at(c_inf, live, t_slow);
     let n = sorted.len();
     // slow group: from the slowest term down while its share stays within budget / 2
     let mut n_slow = 0;
-    while n_slow < n && group_bound(&sorted[n - n_slow - 1..], &[], t, e, g_t) <= 0.5 * budget {
+    while n_slow < n && group_bound(&sorted[n - n_slow - 1..], &[], t_slow, e, g_t) <= 0.5 * budget
+    {
         n_slow += 1;
     }
     // fast group: from the fastest up, never overlapping the slow one
     let mut n_fast = 0;
-    while n_fast < n - n_slow && group_bound(&[], &sorted[..n_fast + 1], t, e, g_t) <= 0.5 * budget
+    while n_fast < n - n_slow
+        && group_bound(&[], &sorted[..n_fast + 1], t_fast, e, g_t) <= 0.5 * budget
     {
         n_fast += 1;
     }
@@ -142,11 +170,12 @@ pub(super) fn solve(
     rtol: f64,
     dispatch: impl Fn(f64, &[(f64, f64)], f64) -> Result<Outcome>,
 ) -> Result<Outcome> {
-    // first guesses: the longest elastic contact for the slow side, e = 1/2
-    let (mut t, mut e) = (hertz_time(c_inf), 0.5);
+    // first guesses: twice / half the estimated contact time for the slow / fast side, e = 1/2
+    let t0 = contact_time_estimate(c_inf, live);
+    let (mut times, mut e) = ((2.0 * t0, 0.5 * t0), 0.5);
     let mut spent = crate::impact::Work::default();
     for _ in 0..REDUCE_ATTEMPTS {
-        let Some(red) = reduce(c_inf, live, t, e, REDUCE_SHARE * rtol) else {
+        let Some(red) = reduce(c_inf, live, times, e, REDUCE_SHARE * rtol) else {
             break;
         };
         let Ok(mut out) = dispatch(c_inf, &red.terms, (1.0 - REDUCE_SHARE) * rtol) else {
@@ -160,8 +189,8 @@ pub(super) fn solve(
             out.work = spent;
             return Ok(out);
         }
-        // reduce again from what the solve found
-        t = t.max(out.contact_time);
+        // reduce again from what the solve found (its contact time on both sides)
+        times = (times.0.max(out.contact_time), times.1.min(out.contact_time));
         e = e.min(out.cor);
     }
     let mut out = dispatch(c_inf, live, rtol)?;
@@ -187,7 +216,7 @@ mod tests {
         let live: Vec<(f64, f64)> = (0..30)
             .map(|i| (1.0 + i as f64, 10f64.powf(-12.0 + 20.0 * i as f64 / 29.0)))
             .collect();
-        let r = reduce(1.0, &live, 3.0, 0.5, 1e-7).unwrap();
+        let r = reduce(1.0, &live, (3.0, 3.0), 0.5, 1e-7).unwrap();
         assert!(r.terms.len() < live.len());
         let (a, b): (f64, f64) = (
             r.fast.iter().map(|(c, t)| c * t).sum(),
@@ -206,6 +235,21 @@ mod tests {
 
     #[test]
     fn two_terms_are_never_reduced() {
-        assert!(reduce(1.0, &[(1.0, 1e-12), (2.0, 1e12)], 3.0, 0.5, 1e-2).is_none());
+        assert!(reduce(1.0, &[(1.0, 1e-12), (2.0, 1e12)], (3.0, 3.0), 0.5, 1e-2).is_none());
+    }
+
+    /// The estimate lies between the glassy and the relaxed Hertz contact times, is a fixed
+    /// point of `T = T_H(G_eq(T))`, and is the Hertz time itself without terms.
+    #[test]
+    fn contact_time_estimate_is_the_smallest_fixed_point() {
+        assert_eq!(contact_time_estimate(1.0, &[]), hertz_time(1.0));
+        // a rubber: glassy 1e6 times the relaxed modulus, spread over 20 decades
+        let live: Vec<(f64, f64)> = (0..30)
+            .map(|i| (1e6 / 30.0, 10f64.powf(-12.0 + 20.0 * i as f64 / 29.0)))
+            .collect();
+        let t = contact_time_estimate(1.0, &live);
+        assert!(t > hertz_time(1e6 + 1.0) && t < hertz_time(1.0), "{t}");
+        let g = modulus_at(1.0, &live, t);
+        assert!((hertz_time(g) / t - 1.0).abs() < 2e-3, "{t}");
     }
 }

@@ -111,7 +111,7 @@ impl<N: Dashpots> EulerFoundation<N> {
     /// Admit the elements with `g_i < d` (they enter at rest: `w = 0`).
     pub(crate) fn admit(&mut self, d: f64) {
         while self.n < self.geom.capacity() && self.geom.g(self.n) < d {
-            self.w.extend(std::iter::repeat_n(0.0, self.len));
+            self.w.resize(self.w.len() + self.len, 0.0);
             self.n += 1;
         }
         self.max_elements = self.max_elements.max(self.n);
