@@ -610,8 +610,8 @@ impl Body {
 /// An impact with its solver settings, as in a scene file: one `sphere` on a half-space of
 /// `material`, or two `bodies`; `velocity` (m/s) the (relative) normal impact velocity; the
 /// solver's `name`, `rtol`, and optionally an explicit MDR resolution `elements`, `steps`; the
-/// `[output]` paths `history` and `plot` are kept for `to_toml` (files are written by
-/// `mdr-impact run`, not by `Scene.run`).
+/// `[output]` paths `history_csv` (TOML key `history`) and `plot` are kept for `to_toml` (the
+/// files are written by `mdr-impact run`, not by `Scene.run`).
 #[pyclass(frozen, eq, module = "mdr_impact")]
 #[derive(Debug, Clone, PartialEq)]
 struct Scene {
@@ -623,7 +623,7 @@ impl Scene {
     #[new]
     #[pyo3(signature = (*, velocity, sphere = None, material = None, bodies = None,
         solver = "auto", rtol = tolerances::DEFAULT_RTOL, elements = None, steps = None,
-        history = None, plot = None))]
+        history_csv = None, plot = None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         velocity: f64,
@@ -634,7 +634,7 @@ impl Scene {
         rtol: f64,
         elements: Option<usize>,
         steps: Option<usize>,
-        history: Option<PathBuf>,
+        history_csv: Option<PathBuf>,
         plot: Option<PathBuf>,
     ) -> PyResult<Self> {
         let impact = match (sphere, material, bodies) {
@@ -661,18 +661,18 @@ impl Scene {
             (None, None) => None,
             _ => return Err(usage("give both elements and steps, or neither".into())),
         };
-        for (field, path) in [("history", &history), ("plot", &plot)] {
+        for (field, path) in [("history_csv", &history_csv), ("plot", &plot)] {
             if path.as_ref().is_some_and(|p| p.as_os_str().is_empty()) {
                 return Err(usage(format!("{field} is an empty path: give a file name")));
             }
         }
-        options.history = history.is_some() || plot.is_some();
+        options.history = history_csv.is_some() || plot.is_some();
         ok(options.validate())?;
         Ok(Self {
             inner: RsScene {
                 impact,
                 options,
-                history_csv: history,
+                history_csv,
                 plot,
             },
         })
@@ -811,9 +811,9 @@ impl Scene {
     fn resolution(&self) -> Option<(usize, usize)> {
         self.inner.options.resolution.map(|r| (r.elements, r.steps))
     }
-    /// The `[output] history` path, else `None`.
+    /// The `[output] history` path (CSV), else `None`.
     #[getter]
-    fn history(&self) -> Option<PathBuf> {
+    fn history_csv(&self) -> Option<PathBuf> {
         self.inner.history_csv.clone()
     }
     /// The `[output] plot` path, else `None`.

@@ -79,12 +79,12 @@ def test_scene_round_trips(root, tmp_path):
         bodies=(mi.Body(radius=2e-2, mass=1e-2, material=mi.GeneralMaterial(shear, k_0=1e9)),
                 mi.Body(radius=1e-2, mass=5e-3,
                         material=mi.Material(1e6, 1e7, 500.0, k_0=5e7))),
-        velocity=2.0, solver="mdr", rtol=1e-4, history="out/h.csv")
+        velocity=2.0, solver="mdr", rtol=1e-4, history_csv="out/h.csv")
     path = tmp_path / "built.toml"
     built.save(path)
     loaded = mi.Scene.load(path)
     assert loaded == built
-    assert loaded.solver == "mdr" and loaded.rtol == 1e-4 and str(loaded.history) == "out/h.csv"
+    assert loaded.solver == "mdr" and loaded.rtol == 1e-4 and str(loaded.history_csv) == "out/h.csv"
     assert loaded.with_solver(solver="fast") != loaded
     assert loaded.with_velocity(3.0).velocity == 3.0
 
