@@ -60,6 +60,7 @@ def main():
     if args.rows < 1 or args.repeats < 1:
         sys.exit("error: --rows and --repeats must be at least 1")
 
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
     nu, p2, p3 = rows(args.rows, args.seed)
     with tempfile.TemporaryDirectory() as tmp:
         csv_in = pathlib.Path(tmp) / "rows.csv"
@@ -89,10 +90,12 @@ def main():
     if args.report:
         section = (
             f"Measured by `python python/bench_cor.py --report {args.report}` on {cpu()}, "
-            f"{os.cpu_count()} cores, Python {platform.python_version()}, numpy "
+            f"{os.cpu_count()} cores (load average {load:.1f} at the start: other work shares "
+            f"them), Python {platform.python_version()}, numpy "
             f"{np.__version__}: {args.rows} random rows of the paper's range (seed {args.seed}; "
             f"nu in (-0.99, 0.5], log10 p2 in [-4, 2], log10 p3 in [-3, 4]), solver auto, "
-            f"rtol {args.rtol:g}, all cores; median wall time of {args.repeats} runs. "
+            f"rtol {args.rtol:g}, all cores; median wall time of {args.repeats} runs, the two paths "
+            f"alternating. "
             f"Machine-dependent, so not part of the staleness check.\n\n"
             f"| path | time for {args.rows} rows |\n| --- | --- |\n"
             f"| `mdr_impact.cor(nu, p2, p3)` (numpy arrays in and out, in-process) | "
