@@ -1,6 +1,6 @@
 """Time `mdr_impact.cor` against `mdr-impact cor --input` on the same rows.
 
-    python python/bench_cor.py [--rows 100000] [--rtol 1e-6] [--repeats 3] [--seed 1]
+    python python/bench_cor.py [--rows 100000] [--rtol 1e-6] [--repeats 5] [--seed 1]
                                [--bin target/release/mdr-impact] [--report VALIDATION.md]
 
 Both solve the same random rows of the paper's range (nu in (-0.99, 0.5], log10 p2 in [-4, 2],
@@ -49,7 +49,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--rows", type=int, default=100_000)
     ap.add_argument("--rtol", type=float, default=mi.DEFAULT_RTOL)
-    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--repeats", type=int, default=5)
     ap.add_argument("--seed", type=int, default=1)
     target = pathlib.Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
     ap.add_argument("--bin", type=pathlib.Path, default=target / "release" / "mdr-impact")
@@ -89,7 +89,7 @@ def main():
         sys.exit("error: the package and the command line disagree")
     if args.report:
         section = (
-            f"Measured by `python python/bench_cor.py --report {args.report}` on {cpu()}, "
+            f"Measured by `python python/bench_cor.py {' '.join(sys.argv[1:])}` on {cpu()}, "
             f"{os.cpu_count()} cores (load average {load:.1f} at the start: other work shares "
             f"them), Python {platform.python_version()}, numpy "
             f"{np.__version__}: {args.rows} random rows of the paper's range (seed {args.seed}; "
