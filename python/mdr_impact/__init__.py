@@ -121,7 +121,8 @@ def cor(nu, p2, p3, rtol=DEFAULT_RTOL, solver="auto", full_output=False):
 
     Notes
     -----
-    The elements are solved in parallel on all cores with the GIL released; the results equal
+    The elements are solved in parallel on all cores with the GIL released, in chunks between
+    which Ctrl-C (``KeyboardInterrupt``) ends the call; the results equal
     ``mdr-impact cor --input`` on the same rows bit for bit. Willert et al., Eqs. (10)-(11).
 
     Examples

@@ -90,13 +90,43 @@ fn array<'py>(py: Python<'py>, v: Vec<f64>, shape: &[usize]) -> PyResult<Bound<'
     Ok(a.reshape(shape.to_vec())?.into_any())
 }
 
+/// Elements solved per release of the GIL: between two chunks a pending signal is handled, so
+/// Ctrl-C (`KeyboardInterrupt`) ends a long call after the chunk in progress.
+const CHUNK: usize = 4096;
+
+/// `solve` over `items` in chunks of [`CHUNK`], in order, each with the GIL released; a pending
+/// signal between chunks ends the call with its exception. The error of a failing chunk carries
+/// the index in `items` of its first failing element (so the first in input order, as
+/// `cor --input` reports it).
+fn in_chunks<T, R, F>(
+    py: Python<'_>,
+    items: &[T],
+    solve: F,
+) -> PyResult<Result<Vec<R>, (usize, mdr_impact::Error)>>
+where
+    T: Sync,
+    R: Send,
+    F: Fn(&[T]) -> Result<Vec<R>, (usize, mdr_impact::Error)> + Sync,
+{
+    let mut out = Vec::with_capacity(items.len());
+    for (k, chunk) in items.chunks(CHUNK).enumerate() {
+        match py.detach(|| solve(chunk)) {
+            Ok(rows) => out.extend(rows),
+            Err((i, e)) => return Ok(Err((k * CHUNK + i, e))),
+        }
+        py.check_signals()?;
+    }
+    Ok(Ok(out))
+}
+
 // ------------------------------------------------------------------------------------------
 // Dimensionless groups
 // ------------------------------------------------------------------------------------------
 
 /// CoR, contact time and maximum indentation (canonical units `m = R = v0 = G_inf = 1`) of the
 /// flat arrays `nu`, `p2`, `p3` (equal lengths) that were broadcast to `shape`: the computation
-/// of `mdr-impact cor --input`, in parallel, GIL released. Errors name the element's index.
+/// of `mdr-impact cor --input`, in parallel, GIL released ([`in_chunks`]). Errors name the
+/// element's index.
 #[pyfunction]
 #[pyo3(signature = (nu, p2, p3, shape, rtol, solver))]
 fn cor_groups<'py>(
@@ -129,8 +159,7 @@ fn cor_groups<'py>(
     for i in 0..nu.len() {
         groups.push(Groups::new(nu[i], p2[i], p3[i]).map_err(|e| element_err(i, &shape, e))?);
     }
-    let outcomes = py
-        .detach(|| batch::solve_groups(&groups, &opts))
+    let outcomes = in_chunks(py, &groups, |g| batch::solve_groups(g, &opts))?
         .map_err(|(i, e)| element_err(i, &shape, e))?;
     let pick = |f: fn(&Outcome) -> f64| outcomes.iter().map(f).collect::<Vec<f64>>();
     let cor = array(py, pick(|o| o.cor), &shape)?;
@@ -979,9 +1008,10 @@ fn curve_values<'py>(
         )));
     }
     let s = &scene.inner;
-    let rows = py
-        .detach(|| curve::run_velocities(&s.impact, &s.options, &v0, &|| {}))
-        .map_err(|(i, e)| element_err(i, &shape, e))?;
+    let rows = in_chunks(py, &v0, |v| {
+        curve::run_velocities(&s.impact, &s.options, v, &|| {})
+    })?
+    .map_err(|(i, e)| element_err(i, &shape, e))?;
     let d = PyDict::new(py);
     let col = |f: fn(&curve::CurveRow) -> f64| rows.iter().map(f).collect::<Vec<f64>>();
     d.set_item("v0", array(py, v0.clone(), &shape)?)?;

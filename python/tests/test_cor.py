@@ -130,3 +130,25 @@ def test_gil_is_released_during_solves():
     gaps = np.diff([t0, *ticks, time.perf_counter()])
     assert total > 0.05, "too little work to observe"
     assert gaps.max() < 0.5 * total
+
+
+def test_first_failing_solve_is_named_across_chunks():
+    # p3 = 0 is elastic (Hertz, any solver); one dissipative row far into the array makes the
+    # paper's explicit Euler refuse rtol 1e-6 there
+    p3 = np.zeros(9000)
+    p3[[7000, 8000]] = 1.0
+    with pytest.raises(mi.Error, match=r"^index \(7000,\): mdr-euler"):
+        mi.cor(0.45, 0.01, p3, solver="mdr-euler", rtol=1e-6)
+
+
+def test_keyboard_interrupt_ends_a_long_call():
+    import _thread
+
+    p3 = np.logspace(-2, 3, 40000)
+    timer = threading.Timer(0.05, _thread.interrupt_main)
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            mi.cor(0.45, 0.01, p3, rtol=1e-8)
+    finally:
+        timer.cancel()
