@@ -25,7 +25,7 @@ use mdr_impact::{
 };
 
 pyo3::create_exception!(
-    _core,
+    mdr_impact,
     Error,
     PyValueError,
     "Bad input or a refused solve: the message is the one `mdr-impact` prints after `error: `."

@@ -69,6 +69,7 @@ def test_scalar_bad_input_raises_with_group(args, message):
         mi.cor(*args)
     assert str(err.value).startswith(message)
     assert isinstance(err.value, ValueError)
+    assert type(err.value).__module__ == "mdr_impact"
 
 
 def test_array_bad_input_names_index():
