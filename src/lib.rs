@@ -23,6 +23,7 @@ pub mod bench;
 pub mod bodies;
 pub mod catalogue;
 pub mod curve;
+pub mod dem;
 pub mod error;
 pub mod fast;
 pub mod figures;

@@ -220,3 +220,120 @@ pub fn cor_curve_svg(path: &Path, curve: &crate::curve::Curve, log: bool) -> Res
     }
     Ok(svg)
 }
+
+/// The SVG text of `mdr-impact dem`'s plot: our `e(v0)` and the `e(v0)` of each fitted DEM law
+/// (our integration of its force law), on a linear or (with the report's `log`) logarithmic
+/// velocity axis. Rendered in memory only; `path` names the file in errors.
+pub fn dem_svg(path: &Path, report: &crate::dem::DemReport) -> Result<String> {
+    type Chart<'a, 'b, X> =
+        ChartContext<'a, SVGBackend<'b>, Cartesian2d<X, plotters::coord::types::RangedCoordf64>>;
+    type Series = (String, Vec<(f64, f64)>, RGBColor);
+    fn draw<'a, 'b: 'a, X>(
+        path: &Path,
+        chart: &mut Chart<'a, 'b, X>,
+        series: &[Series],
+    ) -> Result<()>
+    where
+        X: Ranged<ValueType = f64> + plotters::coord::ranged1d::ValueFormatter<f64>,
+    {
+        let e = |e: &dyn std::fmt::Display| Error::io(path, e);
+        chart
+            .configure_mesh()
+            .x_desc("impact velocity v0 (m/s)")
+            .y_desc("coefficient of restitution e")
+            .draw()
+            .map_err(|x| e(&x))?;
+        for (name, pts, color) in series {
+            let color = *color;
+            chart
+                .draw_series(LineSeries::new(pts.iter().copied(), color.stroke_width(2)))
+                .map_err(|x| e(&x))?
+                .label(name.as_str())
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
+                });
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::LowerLeft)
+            .border_style(BLACK)
+            .background_style(WHITE.mix(0.85))
+            .draw()
+            .map_err(|x| e(&x))?;
+        Ok(())
+    }
+
+    let rows = &report.rows;
+    let n = rows.len();
+    if n < 2 || !(rows[0].v0 < rows[n - 1].v0) {
+        return Err(Error::Unsupported(format!(
+            "{}: a curve needs at least two velocities",
+            path.display()
+        )));
+    }
+    let pct = |x: f64| format!("{:.1} %", 100.0 * x);
+    let along = |cor: &[f64]| -> Vec<(f64, f64)> {
+        rows.iter().zip(cor).map(|(r, e)| (r.v0, *e)).collect()
+    };
+    let (c, v) = (&report.constant, &report.viscoelastic);
+    let series: Vec<Series> = vec![
+        (
+            "e(v0), this model".to_string(),
+            rows.iter().map(|r| (r.v0, r.cor)).collect(),
+            RGBColor(30, 80, 200),
+        ),
+        (
+            format!(
+                "constant CoR, input e = {:.4} (worst {}, rms {})",
+                c.cor_input,
+                pct(c.fit.worst_rel_error),
+                pct(c.fit.rms_rel_error)
+            ),
+            along(&c.fit.cor),
+            RGBColor(200, 30, 30),
+        ),
+        (
+            format!(
+                "viscoelastic, A = {:.3e} s (worst {}, rms {})",
+                v.a,
+                pct(v.fit.worst_rel_error),
+                pct(v.fit.rms_rel_error)
+            ),
+            along(&v.fit.cor),
+            RGBColor(30, 140, 60),
+        ),
+    ];
+    let (x0, x1) = (rows[0].v0, rows[n - 1].v0);
+    let y1 = 1.05;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (900, 560)).into_drawing_area();
+        let e = |e: &dyn std::fmt::Display| Error::io(path, e);
+        root.fill(&WHITE).map_err(|x| e(&x))?;
+        let mut builder = ChartBuilder::on(&root);
+        builder
+            .caption(
+                format!(
+                    "DEM damping laws fitted to e(v0), Hertz with the {} modulus",
+                    report.modulus.name()
+                ),
+                ("sans-serif", 22),
+            )
+            .margin(12)
+            .x_label_area_size(44)
+            .y_label_area_size(70);
+        if report.log {
+            let mut chart = builder
+                .build_cartesian_2d((x0..x1).log_scale(), 0.0..y1)
+                .map_err(|x| e(&x))?;
+            draw(path, &mut chart, &series)?;
+        } else {
+            let mut chart = builder
+                .build_cartesian_2d(x0..x1, 0.0..y1)
+                .map_err(|x| e(&x))?;
+            draw(path, &mut chart, &series)?;
+        }
+        root.present().map_err(|x| e(&x))?;
+    }
+    Ok(svg)
+}
