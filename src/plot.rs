@@ -284,7 +284,8 @@ pub fn dem_svg(path: &Path, report: &crate::dem::DemReport) -> Result<String> {
         ),
         (
             format!(
-                "constant CoR, input e = {:.4} (worst {}, rms {})",
+                "constant CoR e = {:.4}, input e = {:.4} (worst {}, rms {})",
+                c.cor,
                 c.cor_input,
                 pct(c.fit.worst_rel_error),
                 pct(c.fit.rms_rel_error)
