@@ -88,6 +88,11 @@ pub const ODE_ATOL: f64 = 1e-13;
 /// Step cap of one DEM ODE integration.
 pub const ODE_MAX_STEPS: u64 = 200_000;
 
+/// Smallest input CoR of the constant-CoR law the fit writes. The law's CoR has a floor as the
+/// input goes to zero (`gamma -> sqrt(5)`), so a curve below it is answered with this input and
+/// a warning.
+pub const MIN_COR_INPUT: f64 = 1e-6;
+
 /// Largest damping coefficient `c` of the viscoelastic law searched by the fit (dimensionless;
 /// `e` is about 0.1 there).
 const MAX_VISCO_C: f64 = 100.0;
@@ -495,6 +500,9 @@ pub struct ConstantLaw {
     pub cor_input: f64,
     /// The CoR that input produces (our integration, the same at every velocity).
     pub cor: f64,
+    /// True when the least-squares constant lies below what the law can produce: the input is
+    /// then [`MIN_COR_INPUT`].
+    pub at_floor: bool,
     /// Errors against our curve.
     pub fit: Fit,
 }
@@ -521,10 +529,11 @@ pub fn fit_constant(target: &[f64]) -> Result<ConstantLaw> {
     let want = target.iter().map(|e| 1.0 / e).sum::<f64>()
         / target.iter().map(|e| 1.0 / (e * e)).sum::<f64>();
     // e(e_in) rises from its floor at e_in -> 0 (gamma -> sqrt 5) to 1 at e_in = 1
-    let (mut lo, mut hi) = (f64::MIN_POSITIVE, 1.0);
+    let (mut lo, mut hi) = (MIN_COR_INPUT, 1.0);
+    let at_floor = want < 1.0 && constant_cor(lo)? >= want;
     let cor_input = if want >= 1.0 {
         1.0
-    } else if constant_cor(lo)? >= want {
+    } else if at_floor {
         lo
     } else {
         for _ in 0..crate::tolerances::ROOT_MAX_ITER {
@@ -548,6 +557,7 @@ pub fn fit_constant(target: &[f64]) -> Result<ConstantLaw> {
     Ok(ConstantLaw {
         cor_input,
         cor,
+        at_floor,
         fit: Fit::new(vec![cor; target.len()], target),
     })
 }
@@ -728,6 +738,13 @@ pub fn fit(
     let constant = fit_constant(&target)?;
     let viscoelastic = fit_viscoelastic(&contact, &v0, &target)?;
     let mut warnings: Vec<String> = note.into_iter().collect();
+    if constant.at_floor {
+        warnings.push(format!(
+            "the constant CoR law cannot produce less than e = {:.4} (input e = \
+             {MIN_COR_INPUT:e}); our e(v0) lies lower",
+            constant.cor
+        ));
+    }
     let pct = |x: f64| format!("{:.1} %", 100.0 * x);
     let laws = [
         ("constant CoR", &constant.fit),

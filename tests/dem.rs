@@ -104,7 +104,15 @@ fn constant_fit_reproduces_its_cor() {
             .unwrap()
             .cor;
         assert!((again / want - 1.0).abs() < 1e-9);
+        assert!(!law.at_floor);
     }
+    // below the law's floor: the smallest input, flagged
+    let floor = dem::fit_constant(&[0.05; 3]).unwrap();
+    assert!(floor.at_floor && floor.cor_input == dem::MIN_COR_INPUT);
+    assert!(floor.cor > 0.05 && floor.cor < 0.2, "{}", floor.cor);
+    let elastic = dem::fit_constant(&[1.0; 3]).unwrap();
+    assert_eq!((elastic.cor_input, elastic.at_floor), (1.0, false));
+    assert!((elastic.cor - 1.0).abs() < 1e-9);
 }
 
 #[test]
