@@ -2,8 +2,11 @@
 //! expansions, the fits against data made by the laws themselves, and the command line (files,
 //! formats, errors, no partial output).
 
+mod common;
+
 use std::path::Path;
-use std::process::{Command, Output};
+
+use common::{run, stderr};
 
 use mdr_impact::curve::{CurveRow, VelocityRange};
 use mdr_impact::dem::{
@@ -213,19 +216,6 @@ fn report_of_synthetic_data_has_no_warning_and_the_exact_lines() {
 }
 
 // ---- command line -------------------------------------------------------------------------
-
-fn run(args: &[&str], dir: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_mdr-impact"))
-        .args(args)
-        .current_dir(dir)
-        .env("CI", "1")
-        .output()
-        .unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).to_string()
-}
 
 #[test]
 fn cli_dem_writes_its_files_in_every_format() {
