@@ -4,8 +4,6 @@
 
 mod common;
 
-use std::path::Path;
-
 use common::{run, stderr};
 
 use mdr_impact::curve::{self, VelocityRange, CSV_HEADER};
