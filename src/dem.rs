@@ -493,6 +493,16 @@ impl Fit {
     }
 }
 
+/// Contact times of a law against ours (the time until the contact force vanishes).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactTimes {
+    /// The law's contact time (s) at each velocity of the curve, with the Hertz stiffness of
+    /// the report.
+    pub law: Vec<f64>,
+    /// Largest `|t_law - t| / t` over the range.
+    pub worst_rel_error: f64,
+}
+
 /// The fitted constant-CoR law.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ConstantLaw {
@@ -672,6 +682,10 @@ pub struct DemReport {
     pub constant: ConstantLaw,
     /// The viscoelastic law.
     pub viscoelastic: ViscoelasticLaw,
+    /// Contact times of the constant-CoR law.
+    pub constant_times: ContactTimes,
+    /// Contact times of the viscoelastic law.
+    pub viscoelastic_times: ContactTimes,
     /// Warnings, one line each (without the `warning: ` prefix).
     pub warnings: Vec<String>,
 }
@@ -735,8 +749,33 @@ pub fn fit(
             value: *bad,
         });
     }
+    if let Some(bad) = rows.iter().find(|r| !(r.contact_time > 0.0)) {
+        return Err(Error::NonFinite {
+            what: "contact time of the curve (not positive)",
+            value: bad.contact_time,
+        });
+    }
     let constant = fit_constant(&target)?;
     let viscoelastic = fit_viscoelastic(&contact, &v0, &target)?;
+    let times = |law: DemLaw| -> Result<ContactTimes> {
+        let law: Vec<f64> = v0
+            .par_iter()
+            .map(|v| contact.impact(law, *v).map(|d| d.contact_time))
+            .collect::<Result<_>>()?;
+        let worst_rel_error = law
+            .iter()
+            .zip(&rows)
+            .map(|(t, r)| ((t - r.contact_time) / r.contact_time).abs())
+            .fold(0.0, f64::max);
+        Ok(ContactTimes {
+            law,
+            worst_rel_error,
+        })
+    };
+    let constant_times = times(DemLaw::CoeffRestitution {
+        cor_input: constant.cor_input,
+    })?;
+    let viscoelastic_times = times(DemLaw::Viscoelastic { a: viscoelastic.a })?;
     let mut warnings: Vec<String> = note.into_iter().collect();
     if constant.at_floor {
         warnings.push(format!(
@@ -782,12 +821,15 @@ pub fn fit(
         geometry,
         constant,
         viscoelastic,
+        constant_times,
+        viscoelastic_times,
         warnings,
     })
 }
 
 /// The CSV header of `dem.csv`.
-pub const CSV_HEADER: &str = "v0,cor,cor_constant,cor_viscoelastic";
+pub const CSV_HEADER: &str = "v0,cor,cor_constant,cor_viscoelastic,contact_time,\
+                              contact_time_constant,contact_time_viscoelastic";
 
 impl DemReport {
     /// The better of the two laws (smaller worst error): `true` for the viscoelastic one.
@@ -795,17 +837,21 @@ impl DemReport {
         self.viscoelastic.fit.worst_rel_error < self.constant.fit.worst_rel_error
     }
 
-    /// `dem.csv`: our CoR and both laws' at every velocity (SI, full precision).
+    /// `dem.csv`: our CoR and contact time (s) and both laws' at every velocity (SI, full
+    /// precision).
     pub fn csv_text(&self) -> String {
         let mut s = String::from(CSV_HEADER);
         s.push('\n');
         for (i, r) in self.rows.iter().enumerate() {
             s.push_str(&format!(
-                "{},{},{},{}\n",
+                "{},{},{},{},{},{},{}\n",
                 fmt(r.v0),
                 fmt(r.cor),
                 fmt(self.constant.fit.cor[i]),
-                fmt(self.viscoelastic.fit.cor[i])
+                fmt(self.viscoelastic.fit.cor[i]),
+                fmt(r.contact_time),
+                fmt(self.constant_times.law[i]),
+                fmt(self.viscoelastic_times.law[i])
             ));
         }
         s
@@ -857,6 +903,16 @@ impl DemReport {
             self.viscoelastic.eta_n0,
             pct(self.viscoelastic.fit.worst_rel_error),
             pct(self.viscoelastic.fit.rms_rel_error)
+        ));
+        let (t0, tn) = (
+            self.rows[0].contact_time,
+            self.rows[self.rows.len() - 1].contact_time,
+        );
+        line(format!(
+            "contact time {t0:.4e} to {tn:.4e} s; the laws' differ by up to {} (constant CoR), \
+             {} (viscoelastic)",
+            pct(self.constant_times.worst_rel_error),
+            pct(self.viscoelastic_times.worst_rel_error)
         ));
         line("forces are clipped at zero (no attraction at the end of contact), as below".into());
         for w in &self.warnings {
@@ -966,6 +1022,9 @@ impl DemReport {
                     "cor": r.cor,
                     "cor_constant": self.constant.fit.cor[i],
                     "cor_viscoelastic": self.viscoelastic.fit.cor[i],
+                    "contact_time": r.contact_time,
+                    "contact_time_constant": self.constant_times.law[i],
+                    "contact_time_viscoelastic": self.viscoelastic_times.law[i],
                 })
             })
             .collect();
@@ -995,12 +1054,14 @@ impl DemReport {
                     "cor": self.constant.cor,
                     "worst_rel_error": self.constant.fit.worst_rel_error,
                     "rms_rel_error": self.constant.fit.rms_rel_error,
+                    "worst_contact_time_rel_error": self.constant_times.worst_rel_error,
                 },
                 "viscoelastic": {
                     "dissipative_constant": self.viscoelastic.a,
                     "lammps_eta_n0": self.viscoelastic.eta_n0,
                     "worst_rel_error": self.viscoelastic.fit.worst_rel_error,
                     "rms_rel_error": self.viscoelastic.fit.rms_rel_error,
+                    "worst_contact_time_rel_error": self.viscoelastic_times.worst_rel_error,
                 },
             },
             "curve": curve,

@@ -165,16 +165,26 @@ fn report_of_synthetic_data_has_no_warning_and_the_exact_lines() {
     let v0 = VelocityRange::parse("0.1:10:8", true).unwrap().values();
     let rows: Vec<CurveRow> = v0
         .iter()
-        .map(|v| CurveRow {
-            v0: *v,
-            cor: c.impact(DemLaw::Viscoelastic { a }, *v).unwrap().cor,
-            contact_time: 0.0,
-            max_force: 0.0,
-            max_compression: 0.0,
+        .map(|v| {
+            let d = c.impact(DemLaw::Viscoelastic { a }, *v).unwrap();
+            CurveRow {
+                v0: *v,
+                cor: d.cor,
+                contact_time: d.contact_time,
+                max_force: 0.0,
+                max_compression: 0.0,
+            }
         })
         .collect();
     let r = dem::fit(rows, true, ModulusChoice::Relaxed, c, Geometry::Wall, None).unwrap();
     assert!(r.viscoelastic_is_better());
+    // the law's own contact times come back; the constant law's differ
+    assert!(
+        r.viscoelastic_times.worst_rel_error < 1e-6,
+        "{:?}",
+        r.viscoelastic_times
+    );
+    assert!(r.constant_times.worst_rel_error > 1e-3);
     // the constant law misses the falling curve by more than 5 %: one warning, naming it
     assert_eq!(r.warnings.len(), 1, "{:?}", r.warnings);
     assert!(r.warnings[0].contains("constant CoR"));
@@ -230,7 +240,10 @@ fn cli_dem_writes_its_files_in_every_format() {
     assert_eq!(out, file);
     assert!(file.contains("\npair_style granular\n"));
     let csv = std::fs::read_to_string(dir.path().join("out/dem.csv")).unwrap();
-    assert!(csv.starts_with("v0,cor,cor_constant,cor_viscoelastic\n"));
+    assert!(csv.starts_with(
+        "v0,cor,cor_constant,cor_viscoelastic,contact_time,contact_time_constant,\
+         contact_time_viscoelastic\n"
+    ));
     assert_eq!(csv.lines().count(), DEFAULT_VELOCITIES + 1);
     assert!(std::fs::read_to_string(dir.path().join("out/dem.svg"))
         .unwrap()
