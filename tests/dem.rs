@@ -16,11 +16,12 @@ use mdr_impact::theory::HERTZ_I;
 
 /// First coefficient of the small-dissipation expansion of the viscoelastic CoR,
 /// `e = 1 - C1 c + C2 c^2 + ...` with `c = (3/2) A (k/m)^(2/5) v0^(1/5)`: Schwager and Pöschel,
-/// Phys. Rev. E 57, 650 (1998), Eq. (31); Ramírez, Pöschel, Brilliantov, Schwager, Phys. Rev. E
-/// 60, 4465 (1999), Table I (`h_2 = -1.15344`). Also the closed form
-/// `(4/5) (5/4)^(3/5) B(3/5, 3/2)` of the energy dissipated along the elastic path.
+/// Phys. Rev. E 57, 650 (1998); Ramírez, Pöschel, Brilliantov, Schwager, Phys. Rev. E 60, 4465
+/// (1999). Also the closed form `(4/5) (5/4)^(3/5) B(3/5, 3/2)` of the energy dissipated along
+/// the elastic path. The delayed recovery (force clipped at zero; Schwager and Pöschel, Phys.
+/// Rev. E 78, 051304 (2008)) changes the expansion only from the order `c^(5/2)` on.
 const C1: f64 = 1.15344;
-/// Second coefficient, same sources (`h_4 = 0.79826`).
+/// Second coefficient, same sources.
 const C2: f64 = 0.79826;
 
 /// A polymer ball of the README's size class on a wall (SI).
