@@ -18,8 +18,8 @@ use mdr_impact::theory::HERTZ_I;
 /// `e = 1 - C1 c + C2 c^2 + ...` with `c = (3/2) A (k/m)^(2/5) v0^(1/5)`: Schwager and Pöschel,
 /// Phys. Rev. E 57, 650 (1998); Ramírez, Pöschel, Brilliantov, Schwager, Phys. Rev. E 60, 4465
 /// (1999). Also the closed form `(4/5) (5/4)^(3/5) B(3/5, 3/2)` of the energy dissipated along
-/// the elastic path. The delayed recovery (force clipped at zero; Schwager and Pöschel, Phys.
-/// Rev. E 78, 051304 (2008)) changes the expansion only from the order `c^(5/2)` on.
+/// the elastic path. Our law clips the force at zero (delayed recovery, Schwager and Pöschel,
+/// Phys. Rev. E 78, 051304 (2008)); the test checks that both coefficients still hold.
 const C1: f64 = 1.15344;
 /// Second coefficient, same sources.
 const C2: f64 = 0.79826;
