@@ -93,6 +93,10 @@ pub const ODE_MAX_STEPS: u64 = 200_000;
 /// a warning.
 pub const MIN_COR_INPUT: f64 = 1e-6;
 
+/// Velocities the viscoelastic fit uses at most (an even subsample of a longer curve; its
+/// errors are still evaluated at every velocity).
+pub const FIT_MAX_VELOCITIES: usize = 200;
+
 /// Largest damping coefficient `c` of the viscoelastic law searched by the fit (dimensionless;
 /// `e` is about 0.1 there).
 const MAX_VISCO_C: f64 = 100.0;
@@ -756,7 +760,22 @@ pub fn fit(
         });
     }
     let constant = fit_constant(&target)?;
-    let viscoelastic = fit_viscoelastic(&contact, &v0, &target)?;
+    // long curves: the parameter from an even subsample, the errors from every velocity
+    let viscoelastic = if v0.len() > FIT_MAX_VELOCITIES {
+        let pick: Vec<usize> = (0..FIT_MAX_VELOCITIES)
+            .map(|i| i * (v0.len() - 1) / (FIT_MAX_VELOCITIES - 1))
+            .collect();
+        let sub = |x: &[f64]| -> Vec<f64> { pick.iter().map(|&i| x[i]).collect() };
+        let a = fit_viscoelastic(&contact, &sub(&v0), &sub(&target))?.a;
+        let cor = visco_cors(contact.viscoelastic_c(a, 1.0), &v0)?;
+        ViscoelasticLaw {
+            a,
+            eta_n0: contact.lammps_eta_n0(a),
+            fit: Fit::new(cor, &target),
+        }
+    } else {
+        fit_viscoelastic(&contact, &v0, &target)?
+    };
     let times = |law: DemLaw| -> Result<ContactTimes> {
         let law: Vec<f64> = v0
             .par_iter()

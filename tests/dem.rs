@@ -359,3 +359,33 @@ fn cli_bad_input_is_one_line_and_writes_nothing() {
     // the format is parsed before any work
     assert_eq!("json".parse::<Format>().unwrap(), Format::Json);
 }
+
+#[test]
+fn long_curves_fit_on_a_subsample_and_report_every_velocity() {
+    let c = contact();
+    let a = 3e-5;
+    let v0 = VelocityRange::parse("0.1:10:401", true).unwrap().values();
+    let rows: Vec<CurveRow> = v0
+        .iter()
+        .map(|v| {
+            let d = c.impact(DemLaw::Viscoelastic { a }, *v).unwrap();
+            CurveRow {
+                v0: *v,
+                cor: d.cor,
+                contact_time: d.contact_time,
+                max_force: 0.0,
+                max_compression: 0.0,
+            }
+        })
+        .collect();
+    assert!(rows.len() > dem::FIT_MAX_VELOCITIES);
+    let r = dem::fit(rows, true, ModulusChoice::Relaxed, c, Geometry::Wall, None).unwrap();
+    assert!(
+        (r.viscoelastic.a / a - 1.0).abs() < 1e-6,
+        "{}",
+        r.viscoelastic.a
+    );
+    assert_eq!(r.viscoelastic.fit.cor.len(), 401);
+    assert!(r.viscoelastic.fit.worst_rel_error < 1e-7);
+    assert_eq!(r.csv_text().lines().count(), 402);
+}
