@@ -29,6 +29,24 @@ fn contact() -> HertzContact {
     HertzContact::new(4.6e-3, 1.0e-2, 4.0e6).unwrap()
 }
 
+/// Curve rows made by the viscoelastic law itself (CoR and contact time) at the log-spaced
+/// velocities `spec`.
+fn law_rows(c: &HertzContact, a: f64, spec: &str) -> Vec<CurveRow> {
+    let v0 = VelocityRange::parse(spec, true).unwrap().values();
+    v0.iter()
+        .map(|v| {
+            let d = c.impact(DemLaw::Viscoelastic { a }, *v).unwrap();
+            CurveRow {
+                v0: *v,
+                cor: d.cor,
+                contact_time: d.contact_time,
+                max_force: 0.0,
+                max_compression: 0.0,
+            }
+        })
+        .collect()
+}
+
 #[test]
 fn elastic_hertz_gives_e_one_and_the_hertz_contact_time() {
     let d = integrate(0.5, 0.0).unwrap();
@@ -163,20 +181,7 @@ fn viscoelastic_fit_recovers_the_dissipative_constant() {
 fn report_of_synthetic_data_has_no_warning_and_the_exact_lines() {
     let c = contact();
     let a = 1e-4;
-    let v0 = VelocityRange::parse("0.1:10:8", true).unwrap().values();
-    let rows: Vec<CurveRow> = v0
-        .iter()
-        .map(|v| {
-            let d = c.impact(DemLaw::Viscoelastic { a }, *v).unwrap();
-            CurveRow {
-                v0: *v,
-                cor: d.cor,
-                contact_time: d.contact_time,
-                max_force: 0.0,
-                max_compression: 0.0,
-            }
-        })
-        .collect();
+    let rows = law_rows(&c, a, "0.1:10:8");
     let r = dem::fit(rows, true, ModulusChoice::Relaxed, c, Geometry::Wall, None).unwrap();
     assert!(r.viscoelastic_is_better());
     // the law's own contact times come back; the constant law's differ
@@ -364,20 +369,7 @@ fn cli_bad_input_is_one_line_and_writes_nothing() {
 fn long_curves_fit_on_a_subsample_and_report_every_velocity() {
     let c = contact();
     let a = 3e-5;
-    let v0 = VelocityRange::parse("0.1:10:401", true).unwrap().values();
-    let rows: Vec<CurveRow> = v0
-        .iter()
-        .map(|v| {
-            let d = c.impact(DemLaw::Viscoelastic { a }, *v).unwrap();
-            CurveRow {
-                v0: *v,
-                cor: d.cor,
-                contact_time: d.contact_time,
-                max_force: 0.0,
-                max_compression: 0.0,
-            }
-        })
-        .collect();
+    let rows = law_rows(&c, a, "0.1:10:401");
     assert!(rows.len() > dem::FIT_MAX_VELOCITIES);
     let r = dem::fit(rows, true, ModulusChoice::Relaxed, c, Geometry::Wall, None).unwrap();
     assert!(
