@@ -68,15 +68,33 @@ impl VelocityRange {
     /// two distinct ends, so `N = 1` is refused (solve one velocity with `run`). Every error
     /// names `--v0`.
     pub fn parse(s: &str, log: bool) -> Result<Self> {
+        Self::parse_with(s, log, None)
+    }
+
+    /// Parse `MIN:MAX[:N]`: as [`VelocityRange::parse`], with `N = default_n` when it is left
+    /// out (`mdr-impact dem`).
+    pub fn parse_optional_n(s: &str, log: bool, default_n: usize) -> Result<Self> {
+        Self::parse_with(s, log, Some(default_n))
+    }
+
+    fn parse_with(s: &str, log: bool, default_n: Option<usize>) -> Result<Self> {
+        let form = if default_n.is_some() {
+            "MIN:MAX[:N]"
+        } else {
+            "MIN:MAX:N"
+        };
         let bad = |what: &str| {
             Error::Unsupported(format!(
-                "{FIELD} = '{s}': {what}; expected MIN:MAX:N (m/s, 0 < MIN < MAX, 2 <= N <= \
+                "{FIELD} = '{s}': {what}; expected {form} (m/s, 0 < MIN < MAX, 2 <= N <= \
                  {MAX_VELOCITIES})"
             ))
         };
         let parts: Vec<&str> = s.split(':').map(str::trim).collect();
-        let [a, b, n] = parts.as_slice() else {
-            return Err(bad("wrong number of ':'-separated parts"));
+        let default_text = default_n.map(|n| n.to_string());
+        let (a, b, n) = match (parts.as_slice(), &default_text) {
+            ([a, b, n], _) => (*a, *b, *n),
+            ([a, b], Some(d)) => (*a, *b, d.as_str()),
+            _ => return Err(bad("wrong number of ':'-separated parts")),
         };
         let num = |t: &str| -> Result<f64> {
             let v: f64 = t

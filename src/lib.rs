@@ -14,6 +14,8 @@
 //! - [`mdr`]: the MDR foundation, Eqs. (4)–(9), with two time schemes;
 //! - [`theory`]: Hertz, Lee–Radok and Ting/Graham, independent of [`mdr`];
 //! - [`solver`]: solver choice and dispatch.
+//! - [`dem`]: parameters for DEM codes (LAMMPS, LIGGGHTS): damping laws fitted to `e(v0)` by
+//!   integrating their force laws, and the Hertz stiffness.
 #![warn(missing_docs)]
 // `!(x > 0.0)` is used on purpose: it is true for NaN, which must be rejected too.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
@@ -23,6 +25,7 @@ pub mod bench;
 pub mod bodies;
 pub mod catalogue;
 pub mod curve;
+pub mod dem;
 pub mod error;
 pub mod fast;
 pub mod figures;

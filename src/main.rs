@@ -50,6 +50,32 @@ enum Command {
         #[arg(long, default_value = "out")]
         out: PathBuf,
     },
+    /// Parameters for DEM codes: the scene's e(v0) (the embedded default when none is given),
+    /// the constant-CoR and viscoelastic damping laws fitted to it with their errors, and the
+    /// Hertz stiffness; writes DIR/dem.csv, DIR/dem.svg and DIR/dem_lammps.in or
+    /// DIR/dem_liggghts.in.
+    Dem {
+        /// Scene file (TOML); its sphere(s), material(s) and solver are used, its velocity and
+        /// [output] are not.
+        scene: Option<PathBuf>,
+        /// Velocities MIN:MAX[:N] in m/s (0 < MIN < MAX, 2 <= N <= 100000; N defaults to 50).
+        #[arg(long, allow_hyphen_values = true)]
+        v0: String,
+        /// Output: lammps or liggghts (input lines on stdout and in DIR), or json (one object
+        /// on stdout).
+        #[arg(long)]
+        format: String,
+        /// Log-spaced velocities (and a log velocity axis) instead of linear.
+        #[arg(long)]
+        log: bool,
+        /// Hertz stiffness from the relaxed (E* = 4 G_eq(inf)) or glassy (E* = 4 G_eq(0))
+        /// modulus.
+        #[arg(long, default_value = "relaxed")]
+        modulus: String,
+        /// Output folder.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+    },
     /// Coefficient of restitution from the dimensionless groups (Eq. 11).
     Cor {
         /// Static Poisson ratio, -1 < nu <= 0.5 (0.5 = incompressible).
@@ -304,6 +330,49 @@ fn run(cli: Cli) -> Result<(), Error> {
             let c = c?;
             let written = curve::write_outputs(&out, &c, log)?;
             print!("{}", curve::summary(&c, Some(&written)));
+            Ok(())
+        }
+        Command::Dem {
+            scene,
+            v0,
+            format,
+            log,
+            modulus,
+            out,
+        } => {
+            use mdr_impact::dem;
+            // the input is checked before the scene is read or anything solved
+            let range = mdr_impact::curve::VelocityRange::parse_optional_n(
+                &v0,
+                log,
+                dem::DEFAULT_VELOCITIES,
+            )?;
+            let format = format.parse::<dem::Format>()?;
+            let modulus = modulus.parse::<dem::ModulusChoice>()?;
+            if out.as_os_str().is_empty() {
+                return Err(Error::EmptyPath { field: "--out" });
+            }
+            let scene = match scene {
+                Some(p) => Scene::load(&p)?,
+                None => Scene::default_scene(),
+            };
+            let bar = progress_bar(range.n as u64, "dem");
+            let report = dem::run(&scene.impact, &scene.options, &range, modulus, &|| {
+                bar.inc(1)
+            });
+            bar.finish_and_clear();
+            let report = report?;
+            let written = dem::write_outputs(&out, &report, format)?;
+            print!("{}", report.text(format));
+            if format == dem::Format::Json {
+                println!();
+            }
+            for w in &report.warnings {
+                eprintln!("warning: {w}");
+            }
+            for f in &written.files {
+                eprintln!("{:<28}{}", "written", f.display());
+            }
             Ok(())
         }
         Command::Cor {

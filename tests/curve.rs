@@ -2,8 +2,9 @@
 //! the default scene's curve, strict input) and the command line (files, errors, no partial
 //! output).
 
-use std::path::Path;
-use std::process::{Command, Output};
+mod common;
+
+use common::{run, stderr};
 
 use mdr_impact::curve::{self, VelocityRange, CSV_HEADER};
 use mdr_impact::scene::Scene;
@@ -231,19 +232,6 @@ fn a_failing_velocity_fails_the_curve_naming_it() {
 }
 
 // ---- command line -------------------------------------------------------------------------
-
-fn run(args: &[&str], dir: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_mdr-impact"))
-        .args(args)
-        .current_dir(dir)
-        .env("CI", "1")
-        .output()
-        .unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).to_string()
-}
 
 #[test]
 fn cli_curve_writes_both_files() {
