@@ -15,6 +15,8 @@ impact(target, ...)
     One impact (a ``Scene``, or a material with sphere and velocity): an ``ImpactResult``.
 curve(scene, v0)
     CoR, contact time, maximum force and compression of a scene at many impact velocities.
+dem(scene, v0, log=False, modulus="relaxed")
+    DEM damping laws (LAMMPS, LIGGGHTS) fitted to the scene's CoR against impact velocity.
 
 Classes
 -------
@@ -29,6 +31,8 @@ Example
 """
 
 from __future__ import annotations
+
+import json
 
 import numpy as np
 
@@ -67,6 +71,7 @@ __all__ = [
     "catalogue",
     "cor",
     "curve",
+    "dem",
     "impact",
 ]
 
@@ -291,3 +296,45 @@ def catalogue():
     """The validation catalogue's impact cases: a list of dicts ``id``, ``regime``, ``nu``,
     ``p2``, ``p3`` (the cases of ``VALIDATION.md``)."""
     return _core.catalogue_impacts()
+
+
+def dem(scene, v0, log=False, modulus="relaxed"):
+    """DEM damping laws fitted to the scene's CoR against impact velocity (``mdr-impact dem``).
+
+    A DEM code (LAMMPS, LIGGGHTS) needs a Hertz stiffness and a damping law. This computes the
+    scene's ``e(v0)`` over the velocity range, fits the constant-CoR law and the viscoelastic
+    (Brilliantov) law with the Hertz stiffness of the relaxed or glassy ``G_eq``, integrating
+    each law as the DEM code does, and reports how far each stays from the curve (see the
+    README's "For DEM users").
+
+    Parameters
+    ----------
+    scene : Scene
+        The impact (sphere or two bodies, material(s), solver settings).
+    v0 : str
+        Velocities ``"MIN:MAX[:N]"`` (m/s, ``0 < MIN < MAX``), as the command's ``--v0``.
+    log : bool, optional
+        Log-spaced velocities (default: evenly spaced).
+    modulus : {"relaxed", "glassy"}, optional
+        Which ``G_eq`` gives the Hertz stiffness (default ``relaxed``).
+
+    Returns
+    -------
+    dict
+        The report of ``mdr-impact dem --format json`` (SI units: the curve, the Hertz contact,
+        both laws with their parameters and errors, warnings), plus ``lammps`` and ``liggghts``:
+        the input lines for those codes, as the command writes them.
+
+    Raises
+    ------
+    Error
+        (a ``ValueError``) with the command's message for a bad range or modulus or a failing
+        solve.
+    """
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a Scene, not {type(scene).__name__}")
+    text, lammps, liggghts = _core.dem_report(scene, str(v0), bool(log), str(modulus))
+    report = json.loads(text)
+    report["lammps"] = lammps
+    report["liggghts"] = liggghts
+    return report

@@ -19,7 +19,7 @@ use mdr_impact::error::escape_text;
 use mdr_impact::material::{BulkProny, BulkRheology, ShearProny};
 use mdr_impact::scene::Scene as RsScene;
 use mdr_impact::{
-    batch, catalogue, curve, output, tolerances, Body as RsBody, BodyMaterial, Bulk,
+    batch, catalogue, curve, dem, output, tolerances, Body as RsBody, BodyMaterial, Bulk,
     GeneralMaterial as RsGeneral, Groups, History, Impact, ImpactMaterial, Material as RsMaterial,
     Outcome, Resolution, SolveOptions, SolverKind, Sphere as RsSphere, TwoBodies,
 };
@@ -1035,6 +1035,29 @@ fn curve_values<'py>(
     Ok(d)
 }
 
+/// `mdr-impact dem` on `scene`: our `e(v0)` at the velocities `v0` (`MIN:MAX[:N]`, m/s, log
+/// spaced with `log`) and both DEM damping laws fitted with the Hertz stiffness of `modulus`
+/// (`relaxed` or `glassy`), GIL released. Returns the report as the command's JSON text and its
+/// LAMMPS and LIGGGHTS input lines.
+#[pyfunction]
+fn dem_report(
+    py: Python<'_>,
+    scene: PyRef<'_, Scene>,
+    v0: &str,
+    log: bool,
+    modulus: &str,
+) -> PyResult<(String, String, String)> {
+    let range = ok(curve::VelocityRange::parse_optional_n(
+        v0,
+        log,
+        dem::DEFAULT_VELOCITIES,
+    ))?;
+    let modulus = ok(modulus.parse::<dem::ModulusChoice>())?;
+    let s = &scene.inner;
+    let report = ok(py.detach(|| dem::run(&s.impact, &s.options, &range, modulus, &|| {})))?;
+    Ok((report.json(), report.lammps_text(), report.liggghts_text()))
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("Error", m.py().get_type::<Error>())?;
@@ -1046,6 +1069,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(cor_groups, m)?)?;
     m.add_function(wrap_pyfunction!(curve_values, m)?)?;
     m.add_function(wrap_pyfunction!(catalogue_impacts, m)?)?;
+    m.add_function(wrap_pyfunction!(dem_report, m)?)?;
     m.add_class::<Prony>()?;
     m.add_class::<Material>()?;
     m.add_class::<GeneralMaterial>()?;

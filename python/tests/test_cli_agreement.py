@@ -108,3 +108,18 @@ def test_scene_error_messages_equal_cli(cli, tmp_path):
         with pytest.raises(mi.Error) as err:
             mi.Scene.load(path)
         assert p.stderr.strip() == f"error: {err.value}"
+
+
+def test_dem_matches_cli(cli, root, tmp_path):
+    path = root / "scenes" / "polymer_ball_on_steel.toml"
+    out = cli("dem", path, "--v0", "0.5:5:12", "--log", "--format", "json", "--out", tmp_path)
+    js = json.loads(out.stdout)
+    r = mi.dem(mi.Scene.load(path), "0.5:5:12", log=True)
+    assert r.pop("lammps") == cli("dem", path, "--v0", "0.5:5:12", "--log", "--format",
+                                  "lammps", "--out", tmp_path / "l").stdout
+    r.pop("liggghts")
+    assert r == js
+    with pytest.raises(mi.Error) as err:
+        mi.dem(mi.Scene.load(path), "5:0.5")
+    p = cli("dem", path, "--v0", "5:0.5", "--format", "json", check=False)
+    assert p.stderr.strip() == f"error: {err.value}"
