@@ -26,6 +26,7 @@ pub mod curve;
 pub mod error;
 pub mod fast;
 pub mod figures;
+pub mod fit;
 pub mod impact;
 pub mod indentation;
 pub mod lines;

@@ -1317,8 +1317,15 @@ pub const PERFORMANCE: FilledSection = FilledSection {
     command: "mdr-impact bench",
 };
 
+/// The round trip of `fit`, filled by `mdr-impact fit-study`.
+pub const FIT_STUDY: FilledSection = FilledSection {
+    key: "fit-study",
+    heading: "10. Fitting drop tests: round trip",
+    command: "mdr-impact fit-study --reps 200 --report VALIDATION.md",
+};
+
 /// Every section filled by another command, in the order of the report.
-pub const FILLED: &[FilledSection] = &[STRESS, PERFORMANCE];
+pub const FILLED: &[FilledSection] = &[STRESS, PERFORMANCE, FIT_STUDY];
 
 /// Keep the bodies of the sections that other commands fill ([`FILLED`]) when `fresh` replaces
 /// `existing`.
