@@ -209,9 +209,20 @@ struct Ctx<'a> {
     model: &'a Model,
     data: &'a Data,
     solves: Cell<usize>,
+    /// `p3 / (eta / g_inf^(3/5))` at the data's mean velocity and first sphere.
+    p3_scale: f64,
 }
 
-impl Ctx<'_> {
+impl<'a> Ctx<'a> {
+    fn new(model: &'a Model, data: &'a Data) -> Self {
+        Ctx {
+            model,
+            data,
+            solves: Cell::new(0),
+            p3_scale: p3_scale(data),
+        }
+    }
+
     /// Model CoR and contact time of every drop.
     fn forward(&self, values: &[f64], rtol: f64) -> Result<Vec<(f64, f64)>> {
         let opts = SolveOptions {
@@ -293,6 +304,9 @@ impl Ctx<'_> {
         };
         let (p, report) = lm.minimize(problem);
         let values = self.values(&p.coords);
+        if std::env::var_os("FIT_DEBUG").is_some() {
+            eprintln!("lm -> {values:?} {:?} evals {} f {:e}", report.termination, report.number_of_evaluations, report.objective_function);
+        }
         if let Some(e) = p.failure.into_inner() {
             if !report.termination.was_successful() {
                 return Err(e);
@@ -352,13 +366,16 @@ impl Ctx<'_> {
         (side(-1.0), side(1.0))
     }
 
+    /// The parameter values of `coords`, clamped into the model's box ([`Model::clamp`]).
     fn values(&self, coords: &[f64]) -> Vec<f64> {
-        self.model
+        let v: Vec<f64> = self
+            .model
             .params
             .iter()
             .zip(coords)
             .map(|(p, c)| p.kind.from_coord(*c))
-            .collect()
+            .collect();
+        self.model.clamp(&v, self.p3_scale)
     }
 
     fn coords(&self, values: &[f64]) -> Vec<f64> {
@@ -441,6 +458,15 @@ pub fn hertz_modulus(sphere: Sphere, v0: f64, t_c: f64) -> f64 {
     let d_max = t_c * v0 / (2.0 * crate::theory::HERTZ_I);
     let k = 5.0 * sphere.mass() * v0 * v0 / (4.0 * d_max.powf(2.5));
     3.0 * k / (16.0 * sphere.radius().sqrt())
+}
+
+/// `p3 / (eta / g_inf^(3/5)) = (v R / m^2)^(1/5)` at the data's mean velocity (geometric) and
+/// the first drop's sphere.
+fn p3_scale(data: &Data) -> f64 {
+    let n = data.observations.len().max(1) as f64;
+    let v_ref = (data.observations.iter().map(|o| o.v0.ln()).sum::<f64>() / n).exp();
+    let sphere = data.setups[data.observations.first().map_or(0, |o| o.setup)].sphere;
+    (v_ref * sphere.radius() / (sphere.mass() * sphere.mass())).powf(0.2)
 }
 
 /// Starting values over the sensible box (see the module docs), with the fixed values kept.
@@ -536,11 +562,7 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
             observations: data.observations.len(),
         });
     }
-    let ctx = Ctx {
-        model,
-        data,
-        solves: Cell::new(0),
-    };
+    let ctx = Ctx::new(model, data);
     let free: Vec<usize> = (0..np).filter(|&i| fixed[i].is_none()).collect();
     // CoR only, with the scale free in g_inf, g_1 and eta: hold g_inf (module docs)
     let hold = model.kind == ModelKind::StandardSolid
@@ -569,21 +591,39 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
         })
         .collect();
     screened.sort_by(|a, b| a.0.total_cmp(&b.0));
-    // the misfit can have several basins, mostly along nu: start from the best screened point
-    // of every nu level and the best ones overall
-    let starts_from: Vec<Vec<f64>> = {
-        let inu = model.index("nu");
-        let mut picked: Vec<Vec<f64>> = Vec::new();
-        for (_, v) in &screened {
-            let level_new = inu.is_some_and(|i| picked.iter().all(|p| p[i] != v[i]));
-            if picked.len() < FIT_LM_STARTS || level_new {
-                picked.push(v.clone());
-            }
-        }
-        picked
-    };
-    let mut minima: Vec<(f64, Vec<f64>)> = Vec::new();
+    // The misfit can have several basins, mostly along nu. With nu free, the best screened
+    // points of every nu level are first minimised with nu held at the level (the profile of
+    // the misfit along nu at the grid levels), and the full fit starts from the best levels.
     let mut last_error = String::from("no starting point gave a finite misfit");
+    let mut starts_from: Vec<Vec<f64>> = Vec::new();
+    match model.index("nu").filter(|i| moving.contains(i)) {
+        Some(inu) => {
+            let held: Vec<usize> = moving.iter().copied().filter(|&k| k != inu).collect();
+            let mut levels: Vec<(f64, Vec<f64>)> = Vec::new();
+            let mut nus: Vec<f64> = screened.iter().map(|(_, v)| v[inu]).collect();
+            nus.sort_by(f64::total_cmp);
+            nus.dedup();
+            for nu in nus {
+                let best_of_level = screened
+                    .iter()
+                    .filter(|(_, v)| v[inu] == nu)
+                    .take(FIT_LM_STARTS)
+                    .filter_map(|(_, v)| match ctx.minimise(ctx.coords(v), &held) {
+                        Ok(m) => Some(m),
+                        Err(e) => {
+                            last_error = e.to_string();
+                            None
+                        }
+                    })
+                    .min_by(|a, b| a.0.total_cmp(&b.0));
+                levels.extend(best_of_level);
+            }
+            levels.sort_by(|a, b| a.0.total_cmp(&b.0));
+            starts_from.extend(levels.into_iter().take(FIT_LM_STARTS + 1).map(|(_, v)| v));
+        }
+        None => starts_from.extend(screened.iter().take(FIT_LM_STARTS).map(|(_, v)| v.clone())),
+    }
+    let mut minima: Vec<(f64, Vec<f64>)> = Vec::new();
     let starts = starts_from.len();
     for v in starts_from {
         match ctx.minimise(ctx.coords(&v), &moving) {
@@ -605,11 +645,7 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
 /// The weighted sum of squared residuals of `data` for the parameter `values` (forward solves at
 /// [`FIT_RTOL`](crate::tolerances::FIT_RTOL)).
 pub fn misfit(model: &Model, data: &Data, values: &[f64]) -> Result<f64> {
-    let ctx = Ctx {
-        model,
-        data,
-        solves: Cell::new(0),
-    };
+    let ctx = Ctx::new(model, data);
     Ok(ssr(&ctx.residuals(values, FIT_RTOL)?))
 }
 

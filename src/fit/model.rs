@@ -16,6 +16,16 @@ pub const MAX_PRONY_TERMS: usize = 12;
 /// Eq. 11: `p3 = eta (v0 R / (m^2 G_inf^3))^(1/5)`).
 pub const ETA_GROUP_EXPONENT: f64 = 0.6;
 
+/// The box every fit stays in (values outside are clamped onto it, so the misfit is flat
+/// beyond it and the solver never meets absurd materials): `g_inf` in Pa.
+pub const BOX_G_INF: (f64, f64) = (1.0, 1.0e13);
+/// The box of `p2 = g_inf / g_1` (for Prony each `g_inf / g_i`).
+pub const BOX_P2: (f64, f64) = (1.0e-7, 1.0e4);
+/// The box of `p3` at the data's mean velocity (standard solid).
+pub const BOX_P3: (f64, f64) = (1.0e-4, 1.0e5);
+/// The box of `nu`.
+pub const BOX_NU: (f64, f64) = (-0.999, 0.4999);
+
 /// Which material model is fitted.
 #[derive(Debug, Clone, PartialEq)]
 pub enum ModelKind {
@@ -179,6 +189,29 @@ impl Model {
                 crate::error::check("--fix nu", value, value > -1.0 && value <= 0.5, "-1 < nu <= 0.5")
             }
         }
+    }
+
+    /// `values` clamped into the box ([`BOX_G_INF`], [`BOX_P2`], [`BOX_P3`] with
+    /// `p3 = p3_scale eta / g_inf^(3/5)`, [`BOX_NU`]).
+    pub fn clamp(&self, values: &[f64], p3_scale: f64) -> Vec<f64> {
+        let mut v = values.to_vec();
+        let g_inf = v[0].clamp(BOX_G_INF.0, BOX_G_INF.1);
+        v[0] = g_inf;
+        let moduli = match self.kind {
+            ModelKind::StandardSolid => 1..2,
+            ModelKind::Prony { n } => 1..n + 1,
+        };
+        for x in &mut v[moduli] {
+            *x = x.clamp(g_inf / BOX_P2.1, g_inf / BOX_P2.0);
+        }
+        if self.kind == ModelKind::StandardSolid {
+            let c = g_inf.powf(ETA_GROUP_EXPONENT) / p3_scale;
+            v[2] = v[2].clamp(BOX_P3.0 * c, BOX_P3.1 * c);
+        }
+        if let Some(i) = self.index("nu") {
+            v[i] = v[i].clamp(BOX_NU.0, BOX_NU.1);
+        }
+        v
     }
 
     /// The impact of `sphere` at `v0` (m/s) on the material with parameter `values`.
