@@ -569,6 +569,9 @@ fn run(cli: Cli) -> Result<(), Error> {
                 let secs = t0.elapsed().as_secs_f64();
                 println!("curve --v0 0.01:10:200 --log (default scene): {secs:.3} s");
             }
+            // one 10-drop fit (mdr-impact fit)
+            let fit_time = bench::fit_timing()?;
+            print!("{}", bench::fit_timing_text(&fit_time));
             if !timed.is_empty() {
                 print!("{}", bench::targets(&timed, bench::speedup(&points), batch));
             }
@@ -581,6 +584,8 @@ fn run(cli: Cli) -> Result<(), Error> {
                     section.push('\n');
                     section.push_str(&bench::general_euler_text(r));
                 }
+                section.push('\n');
+                section.push_str(&bench::fit_timing_text(&fit_time));
                 let text = validate::replace_performance(&existing, &section)?;
                 output::write_atomic(&report, |w| {
                     w.write_all(text.as_bytes())

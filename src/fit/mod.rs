@@ -304,9 +304,6 @@ impl<'a> Ctx<'a> {
         };
         let (p, report) = lm.minimize(problem);
         let values = self.values(&p.coords);
-        if std::env::var_os("FIT_DEBUG").is_some() {
-            eprintln!("lm -> {values:?} {:?} evals {} f {:e}", report.termination, report.number_of_evaluations, report.objective_function);
-        }
         if let Some(e) = p.failure.into_inner() {
             if !report.termination.was_successful() {
                 return Err(e);
@@ -849,29 +846,6 @@ fn analyse(
     let mut groups = groups;
     if let (Some(s), Some(q)) = (noise_scale, quantile) {
         let threshold = q * q * s * s;
-        // another minimum of the misfit within the likelihood-ratio threshold: the data do not
-        // exclude it, so every interval is widened to contain it
-        for (other_ssr, other) in others.iter().filter(|o| o.0 - best_ssr <= threshold) {
-            let note = format!(
-                "interval widened to a second minimum of the misfit (SSR {other_ssr:.4e} against \
-                 {best_ssr:.4e})"
-            );
-            let other_groups = model.groups(other);
-            let widen = |e: &mut Estimate, v: f64| {
-                if let (Some((lo, hi)), false) = (e.ci95, e.fixed) {
-                    if v < lo || v > hi {
-                        e.ci95 = Some((lo.min(v), hi.max(v)));
-                        e.note.clone_from(&note);
-                    }
-                }
-            };
-            for (e, v) in parameters.iter_mut().zip(other) {
-                widen(e, *v);
-            }
-            for (e, g) in groups.iter_mut().zip(&other_groups) {
-                widen(e, g.1);
-            }
-        }
         // the profile likelihood where the Wald interval is too wide to trust
         for &i in moving {
             let e = &mut parameters[i];
@@ -899,6 +873,39 @@ fn analyse(
                 }
             }
         }
+        // another minimum of the misfit within the likelihood-ratio threshold: the data do not
+        // exclude it, so every interval is widened to contain it (and judged again by its reach)
+        for (other_ssr, other) in others.iter().filter(|o| o.0 - best_ssr <= threshold) {
+            let note = format!(
+                "interval widened to a second minimum of the misfit (SSR {other_ssr:.4e} against \
+                 {best_ssr:.4e})"
+            );
+            let widen = |e: &mut Estimate, v: f64, to_coord: &dyn Fn(f64) -> f64| {
+                let (Some((lo, hi)), Some(x), false) = (e.ci95, e.value, e.fixed) else {
+                    return;
+                };
+                if lo <= v && v <= hi {
+                    return;
+                }
+                let (lo, hi) = (lo.min(v), hi.max(v));
+                e.ci95 = Some((lo, hi));
+                e.note.clone_from(&note);
+                let reach = (to_coord(lo) - to_coord(x))
+                    .abs()
+                    .max((to_coord(hi) - to_coord(x)).abs());
+                if !(reach <= FIT_MAX_HALF_WIDTH) {
+                    e.identifiable = false;
+                    e.note.push_str(", which spans more than a factor 10 either way");
+                }
+            };
+            for ((e, v), p) in parameters.iter_mut().zip(other).zip(&model.params) {
+                widen(e, *v, &|x| p.kind.to_coord(x));
+            }
+            for (e, g) in groups.iter_mut().zip(model.groups(other)) {
+                widen(e, g.1, &f64::ln);
+            }
+        }
+
     }
     let verdict = verdict(&parameters, &groups);
     Ok(FitResult {

@@ -88,7 +88,7 @@ fn value_text(e: &Estimate) -> String {
 /// The human-readable summary.
 pub fn summary(r: &FitResult, written: Option<&Written>) -> String {
     let mut out = String::new();
-    let mut line = |k: &str, v: String| out.push_str(&format!("{k:<24}{v}\n"));
+    let mut line = |k: &str, v: String| out.push_str(&format!("{k:<34}{v}\n"));
     line("model", model_name(r));
     if let Some(k) = r.model.k_0 {
         line("k_0 (fixed)", format!("{k:.6e} Pa"));
@@ -148,7 +148,7 @@ pub fn summary(r: &FitResult, written: Option<&Written>) -> String {
     out.push_str(&toml_block(r));
     if let Some(w) = written {
         out.push('\n');
-        let mut line = |k: &str, v: String| out.push_str(&format!("{k:<24}{v}\n"));
+        let mut line = |k: &str, v: String| out.push_str(&format!("{k:<34}{v}\n"));
         line("material written to", w.toml.display().to_string());
         line("plot written to", w.svg.display().to_string());
     }
