@@ -37,7 +37,11 @@ fn config(reps: usize, contact_times: bool) -> study::StudyConfig {
 fn assert_coverage(r: &study::StudyReport, name: &str, min: f64) {
     let t = r.tally(name).unwrap();
     let reps = r.config.reps - r.failures.len();
-    assert_eq!(t.identifiable, reps, "{name}: identifiable in {} of {reps}", t.identifiable);
+    assert_eq!(
+        t.identifiable, reps,
+        "{name}: identifiable in {} of {reps}",
+        t.identifiable
+    );
     let share = t.covered as f64 / t.identifiable as f64;
     assert!(share >= min, "{name}: coverage {share} < {min} ({t:?})");
 }
@@ -76,7 +80,11 @@ fn cor_only_leaves_g_inf_open_and_recovers_the_groups() {
         let (lo, hi) = e.ci95.unwrap();
         assert!(lo < v && v < hi);
     }
-    assert!(f.verdict.contains("not determined: g_inf, g_1, eta"), "{}", f.verdict);
+    assert!(
+        f.verdict.contains("not determined: g_inf, g_1, eta"),
+        "{}",
+        f.verdict
+    );
     // fixing g_inf makes g_1 and eta determined
     let mut fixed = [None; 4];
     fixed[0] = Some(study::TRUTH[0]);
@@ -105,7 +113,10 @@ fn degenerate_data_give_clear_errors() {
         Error::ElasticData { observations: 3 }
     );
     for (text, needle) in [
-        ("v0,cor\n1,1.2\n2,0.5\n", "test.csv:2: cor = 1.2e0 is out of range"),
+        (
+            "v0,cor\n1,1.2\n2,0.5\n",
+            "test.csv:2: cor = 1.2e0 is out of range",
+        ),
         ("v0,cor\n-1,0.5\n", "test.csv:2: v0 = -1e0 is out of range"),
         ("v0,cor\n1,NaN\n", "test.csv:2: cor = NaN is out of range"),
         ("v0,cor\nnan,0.5\n", "test.csv:2: v0 = NaN is out of range"),
@@ -115,8 +126,14 @@ fn degenerate_data_give_clear_errors() {
         ("v0,cor,mass\n1,0.5,1\n", "unknown column 'mass'"),
         ("v0,cor\n", "no data rows"),
         ("v0,cor,cor_sd\n1,0.5,-1\n", "cor_sd = -1e0 is out of range"),
-        ("v0,cor,contact_time_sd\n1,0.5,1\n", "contact_time_sd without contact_time"),
-        ("v0,cor,setup\n1,0.5,ball.toml\n", "setup 'ball.toml': no scene ball.toml"),
+        (
+            "v0,cor,contact_time_sd\n1,0.5,1\n",
+            "contact_time_sd without contact_time",
+        ),
+        (
+            "v0,cor,setup\n1,0.5,ball.toml\n",
+            "setup 'ball.toml': no scene ball.toml",
+        ),
     ] {
         let e = parse(text).unwrap_err().to_string();
         assert!(e.contains(needle), "{text:?}: {e}");
@@ -145,7 +162,11 @@ fn no_degrees_of_freedom_means_not_identifiable() {
     for e in f.parameters.iter().chain(&f.groups).filter(|e| !e.fixed) {
         assert!(!e.identifiable && e.ci95.is_none(), "{e:?}");
     }
-    assert!(f.verdict.starts_with("determined by the data: none"), "{}", f.verdict);
+    assert!(
+        f.verdict.starts_with("determined by the data: none"),
+        "{}",
+        f.verdict
+    );
 }
 
 #[test]
@@ -212,7 +233,15 @@ fn cli_json_has_the_documented_keys() {
     )
     .unwrap();
     let o = Command::new(env!("CARGO_BIN_EXE_mdr-impact"))
-        .args(["fit", "cor.csv", "--scene", "ball.toml", "--json", "--out", "res"])
+        .args([
+            "fit",
+            "cor.csv",
+            "--scene",
+            "ball.toml",
+            "--json",
+            "--out",
+            "res",
+        ])
         .current_dir(dir.path())
         .output()
         .unwrap();

@@ -76,9 +76,9 @@ impl Data {
     }
     /// Whether every standard deviation is given (then the noise scale is known).
     pub fn noise_known(&self) -> bool {
-        self.observations
-            .iter()
-            .all(|o| o.cor_sd.is_some() && (o.contact_time.is_none() || o.contact_time_sd.is_some()))
+        self.observations.iter().all(|o| {
+            o.cor_sd.is_some() && (o.contact_time.is_none() || o.contact_time_sd.is_some())
+        })
     }
 }
 
@@ -203,9 +203,8 @@ pub fn parse(
             Some(name) => match setups.iter().position(|s| s.name == name) {
                 Some(i) => i,
                 None => {
-                    let sphere = load(name).map_err(|e| {
-                        err(line, format!("setup '{}': {e}", escape_text(name)))
-                    })?;
+                    let sphere = load(name)
+                        .map_err(|e| err(line, format!("setup '{}': {e}", escape_text(name))))?;
                     setups.push(Setup {
                         name: name.to_string(),
                         sphere,

@@ -110,7 +110,11 @@ impl std::str::FromStr for Fix {
 }
 
 /// The model with the fixes applied: `k_0` becomes the bulk, the rest fixed parameter values.
-pub fn setup_model(kind: ModelKind, fixes: &[Fix], taus: Vec<f64>) -> Result<(Model, Vec<Option<f64>>)> {
+pub fn setup_model(
+    kind: ModelKind,
+    fixes: &[Fix],
+    taus: Vec<f64>,
+) -> Result<(Model, Vec<Option<f64>>)> {
     let k_0 = fixes.iter().find(|f| f.name == "k_0").map(|f| f.value);
     let model = Model::new(kind, k_0, taus)?;
     let mut fixed = vec![None; model.params.len()];
@@ -119,7 +123,11 @@ pub fn setup_model(kind: ModelKind, fixes: &[Fix], taus: Vec<f64>) -> Result<(Mo
             Error::Unsupported(format!(
                 "--fix {}: unknown parameter{}; expected one of {}",
                 crate::error::escape_text(&f.name),
-                if f.name == "nu" { " (k_0 is fixed)" } else { "" },
+                if f.name == "nu" {
+                    " (k_0 is fixed)"
+                } else {
+                    ""
+                },
                 model.names()
             ))
         })?;
@@ -238,9 +246,9 @@ impl<'a> Ctx<'a> {
                 let imp = match &base[o.setup] {
                     Some(b) => b.at_velocity(o.v0)?,
                     None => {
-                        let b = self
-                            .model
-                            .impact(self.data.setups[o.setup].sphere, o.v0, values)?;
+                        let b =
+                            self.model
+                                .impact(self.data.setups[o.setup].sphere, o.v0, values)?;
                         base[o.setup] = Some(b.clone());
                         b
                     }
@@ -431,7 +439,10 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for LmProblem<'_, '_> {
         }
     }
     fn params(&self) -> LmVector<f64> {
-        LmVector::from_iterator(self.moving.len(), self.moving.iter().map(|&j| self.coords[j]))
+        LmVector::from_iterator(
+            self.moving.len(),
+            self.moving.iter().map(|&j| self.coords[j]),
+        )
     }
     fn residuals(&self) -> Option<LmVector<f64>> {
         let r = self.note(self.ctx.residuals(&self.ctx.values(&self.coords), FIT_RTOL))?;
@@ -895,7 +906,8 @@ fn analyse(
                     .max((to_coord(hi) - to_coord(x)).abs());
                 if !(reach <= FIT_MAX_HALF_WIDTH) {
                     e.identifiable = false;
-                    e.note.push_str(", which spans more than a factor 10 either way");
+                    e.note
+                        .push_str(", which spans more than a factor 10 either way");
                 }
             };
             for ((e, v), p) in parameters.iter_mut().zip(other).zip(&model.params) {
@@ -905,7 +917,6 @@ fn analyse(
                 widen(e, g.1, &f64::ln);
             }
         }
-
     }
     let verdict = verdict(&parameters, &groups);
     Ok(FitResult {
@@ -939,8 +950,16 @@ fn verdict(parameters: &[Estimate], groups: &[Estimate]) -> String {
                 .join(", ")
         }
     };
-    let det: Vec<&Estimate> = parameters.iter().chain(groups).filter(|e| e.identifiable && !e.fixed).collect();
-    let not: Vec<&Estimate> = parameters.iter().chain(groups).filter(|e| !e.identifiable).collect();
+    let det: Vec<&Estimate> = parameters
+        .iter()
+        .chain(groups)
+        .filter(|e| e.identifiable && !e.fixed)
+        .collect();
+    let not: Vec<&Estimate> = parameters
+        .iter()
+        .chain(groups)
+        .filter(|e| !e.identifiable)
+        .collect();
     format!(
         "determined by the data: {}; not determined: {}",
         names(&det),

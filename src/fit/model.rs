@@ -185,9 +185,12 @@ impl Model {
                 value > 0.0,
                 "0 < value < inf for a modulus (Pa) or viscosity (Pa s)",
             ),
-            ParamKind::Poisson => {
-                crate::error::check("--fix nu", value, value > -1.0 && value <= 0.5, "-1 < nu <= 0.5")
-            }
+            ParamKind::Poisson => crate::error::check(
+                "--fix nu",
+                value,
+                value > -1.0 && value <= 0.5,
+                "-1 < nu <= 0.5",
+            ),
         }
     }
 
@@ -228,7 +231,8 @@ impl Model {
                 Impact::new(sphere, v0, m)
             }
             ModelKind::Prony { n } => {
-                let terms: Vec<(f64, f64)> = (0..n).map(|i| (values[1 + i], self.taus[i])).collect();
+                let terms: Vec<(f64, f64)> =
+                    (0..n).map(|i| (values[1 + i], self.taus[i])).collect();
                 let shear = ShearProny::new(values[0], &terms)?;
                 let bulk = match (self.k_0, nu) {
                     (Some(k), _) => BulkRheology::Elastic(k),

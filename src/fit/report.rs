@@ -112,7 +112,11 @@ pub fn summary(r: &FitResult, written: Option<&Written>) -> String {
         ),
     );
     for e in r.parameters.iter().chain(&r.groups) {
-        let flag = if e.identifiable { "" } else { "  [not identifiable]" };
+        let flag = if e.identifiable {
+            ""
+        } else {
+            "  [not identifiable]"
+        };
         line(
             &format!("{} ({})", e.name, e.unit),
             format!("{}{flag}", value_text(e)),
@@ -130,7 +134,11 @@ pub fn summary(r: &FitResult, written: Option<&Written>) -> String {
             None => "unknown (no degrees of freedom)".into(),
         },
     );
-    let sv: Vec<String> = r.singular_values.iter().map(|s| format!("{s:.3e}")).collect();
+    let sv: Vec<String> = r
+        .singular_values
+        .iter()
+        .map(|s| format!("{s:.3e}"))
+        .collect();
     line("singular values", sv.join(", "));
     line("identifiability", r.verdict.clone());
     out.push_str("residuals (drop, quantity, measured, model, weighted):\n");
@@ -161,7 +169,8 @@ pub fn summary(r: &FitResult, written: Option<&Written>) -> String {
 pub fn toml_block(r: &FitResult) -> String {
     let mut s = String::from("# fitted by mdr-impact fit (SI units)\n");
     let get = |name: &str| r.parameters.iter().find(|e| e.name == name);
-    let known = |name: &str| get(name).and_then(|e| e.value.filter(|_| e.ci95.is_some() || e.fixed));
+    let known =
+        |name: &str| get(name).and_then(|e| e.value.filter(|_| e.ci95.is_some() || e.fixed));
     let line = |s: &mut String, key: &str, name: &str, unit: &str| match get(name) {
         Some(e) if e.value.is_some() => {
             s.push_str(&format!("{key} = {:e}", e.value.unwrap_or(f64::NAN)));
@@ -174,7 +183,9 @@ pub fn toml_block(r: &FitResult) -> String {
             };
             s.push_str(&format!("    # {tag}\n"));
         }
-        _ => s.push_str(&format!("# {key} = ?    # {unit}: not determined by the data\n")),
+        _ => s.push_str(&format!(
+            "# {key} = ?    # {unit}: not determined by the data\n"
+        )),
     };
     let bulk = |s: &mut String| match r.model.k_0 {
         Some(k) => s.push_str(&format!("k_0 = {k:e}    # Pa, fixed\n")),
@@ -205,11 +216,19 @@ pub fn toml_block(r: &FitResult) -> String {
                 let terms: Vec<String> = (0..n)
                     .map(|i| format!("[{:e}, {:e}]", r.values[1 + i], r.model.taus[i]))
                     .collect();
-                s.push_str(&format!("terms = [{}]    # [g_i (Pa), tau_i (s)]\n", terms.join(", ")));
+                s.push_str(&format!(
+                    "terms = [{}]    # [g_i (Pa), tau_i (s)]\n",
+                    terms.join(", ")
+                ));
             } else {
                 s.push_str("# terms: not all moduli g_i are determined by the data\n");
                 for i in 1..=n {
-                    line(&mut s, &format!("# g_{i} (tau = {:e} s)", r.model.taus[i - 1]), &format!("g_{i}"), "Pa");
+                    line(
+                        &mut s,
+                        &format!("# g_{i} (tau = {:e} s)", r.model.taus[i - 1]),
+                        &format!("g_{i}"),
+                        "Pa",
+                    );
                 }
             }
             s.push_str("[material.bulk]\n");
@@ -245,7 +264,11 @@ pub fn curves(r: &FitResult) -> Result<Vec<(String, Vec<Prediction>)>> {
         }
         let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = v.iter().copied().fold(0.0, f64::max);
-        let (lo, hi) = if lo < hi { (lo, hi) } else { (lo / 2.0, hi * 2.0) };
+        let (lo, hi) = if lo < hi {
+            (lo, hi)
+        } else {
+            (lo / 2.0, hi * 2.0)
+        };
         let pts = (0..PLOT_POINTS)
             .map(|k| {
                 let x = (lo.ln() + (hi / lo).ln() * k as f64 / (PLOT_POINTS - 1) as f64).exp();
@@ -272,7 +295,10 @@ pub fn svg(path: &Path, r: &FitResult, curves: &[(String, Vec<Prediction>)]) -> 
         }
     }
     if !(x0 < x1) {
-        return Err(Error::Unsupported(format!("{}: nothing to plot", path.display())));
+        return Err(Error::Unsupported(format!(
+            "{}: nothing to plot",
+            path.display()
+        )));
     }
     let mut svg = String::new();
     {
@@ -361,7 +387,14 @@ pub fn svg(path: &Path, r: &FitResult, curves: &[(String, Vec<Prediction>)]) -> 
                     });
                 let pts: Vec<(f64, f64)> = obs
                     .iter()
-                    .filter(|o| o.setup == r.data.setups.iter().position(|s| &s.name == name).unwrap_or(usize::MAX))
+                    .filter(|o| {
+                        o.setup
+                            == r.data
+                                .setups
+                                .iter()
+                                .position(|s| &s.name == name)
+                                .unwrap_or(usize::MAX)
+                    })
                     .filter_map(|o| {
                         if time {
                             o.contact_time.map(|t| (o.v0, ms(t)))

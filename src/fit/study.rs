@@ -259,7 +259,9 @@ pub fn markdown(reports: &[StudyReport]) -> String {
             c.velocities,
             if c.contact_times { "" } else { " --cor-only" }
         ));
-        s.push_str("| quantity | reported identifiable | coverage of the 95 % interval | max abs z |\n");
+        s.push_str(
+            "| quantity | reported identifiable | coverage of the 95 % interval | max abs z |\n",
+        );
         s.push_str("| --- | --- | --- | --- |\n");
         for t in &r.tallies {
             let cov = if t.identifiable > 0 {
