@@ -7,7 +7,6 @@ use plotters::prelude::*;
 
 use super::{Estimate, FitResult, ModelKind, Prediction};
 use crate::error::{Error, Result};
-use crate::output::write_atomic;
 
 /// Points of each fitted curve in the plot.
 pub const PLOT_POINTS: usize = 41;
@@ -428,17 +427,10 @@ pub fn write_outputs(dir: &Path, r: &FitResult) -> Result<Written> {
     let c = curves(r)?;
     let svg_body = svg(&svg_path, r, &c)?;
     let toml_body = toml_block(r);
-    write_atomic(&toml, |w| {
-        w.write_all(toml_body.as_bytes())
-            .map_err(|e| Error::io(&toml, e))
-    })?;
-    if let Err(e) = write_atomic(&svg_path, |w| {
-        w.write_all(svg_body.as_bytes())
-            .map_err(|e| Error::io(&svg_path, e))
-    }) {
-        let _ = std::fs::remove_file(&toml);
-        return Err(e);
-    }
+    crate::output::write_all_atomic(&[
+        (toml.as_path(), toml_body.as_bytes()),
+        (svg_path.as_path(), svg_body.as_bytes()),
+    ])?;
     Ok(Written {
         toml,
         svg: svg_path,
