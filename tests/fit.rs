@@ -297,3 +297,68 @@ fn round_trip_study_200() {
         }
     }
 }
+
+#[test]
+fn prony_one_term_at_the_true_time_is_the_standard_solid() {
+    // exact CoRs and contact times of the study material; prony:1 with tau = eta / g_1
+    let exact = study::exact_data(&config(1, true)).unwrap();
+    let mut d = exact.clone();
+    for o in &mut d.observations {
+        (o.cor_sd, o.contact_time_sd) = (None, None);
+    }
+    let [g_inf, g_1, eta, nu] = study::TRUTH;
+    let tau = eta / g_1;
+    let range = format!("{:e}:{:e}", tau / 10.0, tau * 10.0);
+    let kind = ModelKind::Prony { n: 1 };
+    let taus = fit::prony_times(&kind, Some(&range), &d).unwrap();
+    assert!((taus[0] / tau - 1.0).abs() < 1e-12);
+    let (m, fixed) = fit::setup_model(kind, &[], taus).unwrap();
+    let f = fit::fit(&m, &d, &fixed).unwrap();
+    for (name, want) in [("g_inf", g_inf), ("g_1", g_1), ("nu", nu)] {
+        let e = f.get(name).unwrap();
+        assert!(e.identifiable, "{e:?}");
+        let v = e.value.unwrap();
+        assert!((v / want - 1.0).abs() < 1e-5, "{name}: {v} against {want}");
+    }
+}
+
+#[test]
+fn setups_name_scenes_with_different_spheres() {
+    // the same material hit by two balls; the setup column names their scenes
+    let dir = tempfile::tempdir().unwrap();
+    let model = standard();
+    let opts = mdr_impact::SolveOptions {
+        rtol: study::TRUTH_RTOL,
+        ..Default::default()
+    };
+    let mut csv = String::from("v0,cor,contact_time,setup\n");
+    for (name, mass, radius) in [("a.toml", 4.11e-3, 5.0e-3), ("b.toml", 3.3e-2, 1.0e-2)] {
+        std::fs::write(
+            dir.path().join(name),
+            format!(
+                "[sphere]\nmass = {mass:e}\nradius = {radius:e}\n[impact]\nvelocity = 1.0\n\
+                 [material]\ng_inf = 1e6\ng_1 = 1e7\neta = 500.0\npoisson = 0.49\n"
+            ),
+        )
+        .unwrap();
+        let s = Sphere::new(mass, radius).unwrap();
+        for v0 in [0.03, 0.3, 3.0, 30.0] {
+            let o = mdr_impact::solve(&model.impact(s, v0, &study::TRUTH).unwrap(), &opts).unwrap();
+            csv.push_str(&format!("{v0:e},{:e},{:e},{name}\n", o.cor, o.contact_time));
+        }
+    }
+    std::fs::write(dir.path().join("two.csv"), csv).unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_mdr-impact"))
+        .args(["fit", "two.csv", "--json", "--out", "res"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    for (i, name) in ["g_inf", "g_1", "eta", "nu"].iter().enumerate() {
+        let e = &j["parameters"][name];
+        assert_eq!(e["identifiable"], true, "{name}: {e}");
+        let v = e["value"].as_f64().unwrap();
+        assert!((v / study::TRUTH[i] - 1.0).abs() < 1e-4, "{name}: {v}");
+    }
+}
