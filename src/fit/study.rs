@@ -239,7 +239,7 @@ pub fn markdown(reports: &[StudyReport]) -> String {
         "Round trip of `mdr-impact fit` (`src/fit/study.rs`): a standard solid (`g_inf = {g_inf:e} Pa`, \
          `g_1 = {g_1:e} Pa`, `eta = {eta:e} Pa s`, `nu = {nu}`) hit by a sphere of `m = {:e} kg`, \
          `R = {:e} m` at log-spaced velocities from {:e} to {:e} m/s, CoR (and contact times) from \
-         `fast` at rtol {TRUTH_RTOL:e}, each value multiplied by `1 + noise * N(0, 1)` with its \
+         `auto` at rtol {TRUTH_RTOL:e}, each value multiplied by `1 + noise * N(0, 1)` with its \
          standard deviation given (`noise * exact value`); fitted with the full multi-start \
          Levenberg–Marquardt fit. Coverage: the share of the repetitions in which a parameter was \
          reported identifiable whose 95 % interval holds the true value (target 95 %, required \
