@@ -246,9 +246,13 @@ pub struct Written {
     pub svg: PathBuf,
 }
 
+/// A fitted curve of the plot: the setup's index in [`crate::fit::Data::setups`], its name and
+/// the predictions.
+pub type Curve = (usize, String, Vec<Prediction>);
+
 /// The fitted curves for the plot: per setup used, `PLOT_POINTS` log-spaced velocities over the
 /// data's range.
-pub fn curves(r: &FitResult) -> Result<Vec<(String, Vec<Prediction>)>> {
+pub fn curves(r: &FitResult) -> Result<Vec<Curve>> {
     let mut out = Vec::new();
     for (i, s) in r.data.setups.iter().enumerate() {
         let v: Vec<f64> = r
@@ -274,20 +278,21 @@ pub fn curves(r: &FitResult) -> Result<Vec<(String, Vec<Prediction>)>> {
                 r.predict(s.sphere, x)
             })
             .collect::<Result<Vec<_>>>()?;
-        out.push((s.name.clone(), pts));
+        out.push((i, s.name.clone(), pts));
     }
     Ok(out)
 }
 
-/// The SVG of the data against the fitted curves with the 95 % band (a second panel for the
+/// The SVG of the data (with one standard deviation where given) against the fitted curves with
+/// the 95 % band (a second panel for the
 /// contact time when the data have contact times). Rendered in memory; `path` names errors.
-pub fn svg(path: &Path, r: &FitResult, curves: &[(String, Vec<Prediction>)]) -> Result<String> {
+pub fn svg(path: &Path, r: &FitResult, curves: &[Curve]) -> Result<String> {
     let e = |x: &dyn std::fmt::Display| Error::io(path, x);
     let q = r.quantile.unwrap_or(0.0);
     let with_t = r.data.has_contact_times();
     let obs = &r.data.observations;
     let (mut x0, mut x1) = (f64::INFINITY, 0.0f64);
-    for (_, c) in curves {
+    for (_, _, c) in curves {
         for p in c {
             x0 = x0.min(p.v0);
             x1 = x1.max(p.v0);
@@ -320,7 +325,7 @@ pub fn svg(path: &Path, r: &FitResult, curves: &[(String, Vec<Prediction>)]) -> 
                 }
             };
             let (mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY);
-            for (_, c) in curves {
+            for (_, _, c) in curves {
                 for p in c {
                     y0 = y0.min(pick(p, -q));
                     y1 = y1.max(pick(p, q));
@@ -362,7 +367,7 @@ pub fn svg(path: &Path, r: &FitResult, curves: &[(String, Vec<Prediction>)]) -> 
                 .y_desc(if time { "contact time (ms)" } else { "CoR e" })
                 .draw()
                 .map_err(|x| e(&x))?;
-            for (i, (name, c)) in curves.iter().enumerate() {
+            for (i, (setup, name, c)) in curves.iter().enumerate() {
                 let color = Palette99::pick(i).to_rgba();
                 if q > 0.0 {
                     let band: Vec<(f64, f64)> = c
@@ -384,26 +389,29 @@ pub fn svg(path: &Path, r: &FitResult, curves: &[(String, Vec<Prediction>)]) -> 
                     .legend(move |(x, y)| {
                         PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
                     });
-                let pts: Vec<(f64, f64)> = obs
+                // the drops of this setup, with one standard deviation where it is known
+                let pts: Vec<(f64, f64, f64)> = obs
                     .iter()
-                    .filter(|o| {
-                        o.setup
-                            == r.data
-                                .setups
-                                .iter()
-                                .position(|s| &s.name == name)
-                                .unwrap_or(usize::MAX)
-                    })
+                    .filter(|o| o.setup == *setup)
                     .filter_map(|o| {
                         if time {
-                            o.contact_time.map(|t| (o.v0, ms(t)))
+                            o.contact_time
+                                .map(|t| (o.v0, ms(t), ms(o.contact_time_sd.unwrap_or(0.0))))
                         } else {
-                            Some((o.v0, o.cor))
+                            Some((o.v0, o.cor, o.cor_sd.unwrap_or(0.0)))
                         }
                     })
                     .collect();
                 chart
-                    .draw_series(pts.iter().map(|&p| Circle::new(p, 4, BLACK.filled())))
+                    .draw_series(pts.iter().filter(|p| p.2 > 0.0).map(|&(x, y, sd)| {
+                        PathElement::new(vec![(x, y - sd), (x, y + sd)], BLACK.stroke_width(1))
+                    }))
+                    .map_err(|x| e(&x))?;
+                chart
+                    .draw_series(
+                        pts.iter()
+                            .map(|&(x, y, _)| Circle::new((x, y), 4, BLACK.filled())),
+                    )
                     .map_err(|x| e(&x))?;
             }
             chart
