@@ -549,6 +549,9 @@ fn run(cli: Cli) -> Result<(), Error> {
                 print!("{}", bench::general_euler_text(r));
                 Some(r)
             };
+            // one 10-drop fit (mdr-impact fit)
+            let fit_time = bench::fit_timing()?;
+            print!("{}", bench::fit_timing_text(&fit_time));
             let batch = if batch_rows > 0 {
                 let rows = batch::random_rows(batch_rows, 1)?;
                 let t0 = std::time::Instant::now();
@@ -569,9 +572,6 @@ fn run(cli: Cli) -> Result<(), Error> {
                 let secs = t0.elapsed().as_secs_f64();
                 println!("curve --v0 0.01:10:200 --log (default scene): {secs:.3} s");
             }
-            // one 10-drop fit (mdr-impact fit)
-            let fit_time = bench::fit_timing()?;
-            print!("{}", bench::fit_timing_text(&fit_time));
             if !timed.is_empty() {
                 print!("{}", bench::targets(&timed, bench::speedup(&points), batch));
             }
@@ -580,12 +580,12 @@ fn run(cli: Cli) -> Result<(), Error> {
                     std::fs::read_to_string(&report).map_err(|e| Error::io(&report, e))?;
                 let mut section =
                     bench::summary(&points, &bench::machine(), batch, &timed, &general);
+                section.push('\n');
+                section.push_str(&bench::fit_timing_text(&fit_time));
                 if let Some(r) = euler_general {
                     section.push('\n');
                     section.push_str(&bench::general_euler_text(r));
                 }
-                section.push('\n');
-                section.push_str(&bench::fit_timing_text(&fit_time));
                 let text = validate::replace_performance(&existing, &section)?;
                 output::write_atomic(&report, |w| {
                     w.write_all(text.as_bytes())
