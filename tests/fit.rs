@@ -115,6 +115,31 @@ fn degenerate_data_give_clear_errors() {
         fit::fit(&m, &elastic, &[None; 4]).unwrap_err(),
         Error::ElasticData { observations: 3 }
     );
+    // data built in code are checked like a file
+    let mut bad = one.clone();
+    bad.observations[0].setup = 5;
+    assert!(matches!(
+        fit::fit(&m, &bad, &[None; 4]),
+        Err(Error::OutOfRange { field: "setup", .. })
+    ));
+    bad.observations.clear();
+    assert!(matches!(
+        fit::fit(&m, &bad, &[None; 4]),
+        Err(Error::TooFewObservations {
+            observations: 0,
+            ..
+        })
+    ));
+    let mut nan = one.clone();
+    nan.observations[0].v0 = f64::NAN;
+    assert!(matches!(
+        fit::fit(&m, &nan, &[None; 4]),
+        Err(Error::OutOfRange { field: "v0", .. })
+    ));
+    assert!(matches!(
+        fit::fit(&m, &one, &[None, None, None, Some(f64::NAN)]),
+        Err(Error::OutOfRange { .. })
+    ));
     for (text, needle) in [
         (
             "v0,cor\n1,1.2\n2,0.5\n",

@@ -74,6 +74,44 @@ impl Data {
                 .filter(|o| o.contact_time.is_some())
                 .count()
     }
+    /// Check data built in code the way [`parse`] checks a file: at least one drop, every setup
+    /// index valid, `0 < v0 < inf`, `0 < cor <= 1`, contact times and standard deviations
+    /// finite and positive ([`Error::OutOfRange`] naming the field).
+    pub fn validate(&self) -> Result<()> {
+        use crate::error::check;
+        if self.observations.is_empty() {
+            return Err(Error::TooFewObservations {
+                observations: 0,
+                parameters: 1,
+            });
+        }
+        for o in &self.observations {
+            if o.setup >= self.setups.len() {
+                return Err(Error::OutOfRange {
+                    field: "setup",
+                    value: o.setup as f64,
+                    allowed: "an index into the setups",
+                });
+            }
+            check("v0", o.v0, o.v0 > 0.0, "0 < v0 < inf (m/s)")?;
+            check("cor", o.cor, o.cor > 0.0 && o.cor <= 1.0, "0 < cor <= 1")?;
+            for (field, x, allowed) in [
+                ("cor_sd", o.cor_sd, "0 < cor_sd < inf"),
+                ("contact_time", o.contact_time, "0 < contact_time < inf (s)"),
+                (
+                    "contact_time_sd",
+                    o.contact_time_sd,
+                    "0 < contact_time_sd < inf (s)",
+                ),
+            ] {
+                if let Some(x) = x {
+                    check(field, x, x > 0.0, allowed)?;
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// Whether every standard deviation is given (then the noise scale is known).
     pub fn noise_known(&self) -> bool {
         self.observations.iter().all(|o| {

@@ -219,15 +219,18 @@ struct Ctx<'a> {
     solves: Cell<usize>,
     /// `p3 / (eta / g_inf^(3/5))` at the data's mean velocity and first sphere.
     p3_scale: f64,
+    /// Fixed values (never clamped).
+    fixed: Vec<Option<f64>>,
 }
 
 impl<'a> Ctx<'a> {
-    fn new(model: &'a Model, data: &'a Data) -> Self {
+    fn new(model: &'a Model, data: &'a Data, fixed: &[Option<f64>]) -> Self {
         Ctx {
             model,
             data,
             solves: Cell::new(0),
             p3_scale: p3_scale(data),
+            fixed: fixed.to_vec(),
         }
     }
 
@@ -380,7 +383,13 @@ impl<'a> Ctx<'a> {
             .zip(coords)
             .map(|(p, c)| p.kind.from_coord(*c))
             .collect();
-        self.model.clamp(&v, self.p3_scale)
+        let mut v = self.model.clamp(&v, self.p3_scale);
+        for (x, f) in v.iter_mut().zip(&self.fixed) {
+            if let Some(f) = f {
+                *x = *f;
+            }
+        }
+        v
     }
 
     fn coords(&self, values: &[f64]) -> Vec<f64> {
@@ -565,12 +574,18 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
             fixed.len()
         )));
     }
+    data.validate()?;
+    for (i, f) in fixed.iter().enumerate() {
+        if let Some(v) = f {
+            model.check_value(i, *v)?;
+        }
+    }
     if data.observations.iter().all(|o| o.cor == 1.0) {
         return Err(Error::ElasticData {
             observations: data.observations.len(),
         });
     }
-    let ctx = Ctx::new(model, data);
+    let ctx = Ctx::new(model, data, fixed);
     let free: Vec<usize> = (0..np).filter(|&i| fixed[i].is_none()).collect();
     // CoR only, with the scale free in g_inf, g_1 and eta: hold g_inf (module docs)
     let hold = model.kind == ModelKind::StandardSolid
@@ -653,7 +668,7 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
 /// The weighted sum of squared residuals of `data` for the parameter `values` (forward solves at
 /// [`FIT_RTOL`](crate::tolerances::FIT_RTOL)).
 pub fn misfit(model: &Model, data: &Data, values: &[f64]) -> Result<f64> {
-    let ctx = Ctx::new(model, data);
+    let ctx = Ctx::new(model, data, &[]);
     Ok(ssr(&ctx.residuals(values, FIT_RTOL)?))
 }
 
