@@ -5,7 +5,7 @@
 //! - Residuals: `(e_model - e) / sd_e` per drop and `(t_model - t_c) / sd_t` per measured contact
 //!   time; without a `cor_sd` column `sd_e = 1` (absolute CoR residuals), without
 //!   `contact_time_sd` `sd_t = t_c` (relative contact-time residuals). Forward model: [`solve`]
-//!   with `auto` at [`FIT_RTOL`](crate::tolerances::FIT_RTOL) (1e-8, far below any drop test's
+//!   with `auto` at [`FIT_RTOL`] (1e-8, far below any drop test's
 //!   noise).
 //! - Coordinates: `ln` of every modulus and viscosity (positivity) and the logistic coordinate
 //!   of `nu` in `(-1, 0.5)` ([`model::ParamKind`]); fixed parameters (`--fix`) are left out.
@@ -666,7 +666,7 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
 }
 
 /// The weighted sum of squared residuals of `data` for the parameter `values` (forward solves at
-/// [`FIT_RTOL`](crate::tolerances::FIT_RTOL)).
+/// [`FIT_RTOL`]).
 pub fn misfit(model: &Model, data: &Data, values: &[f64]) -> Result<f64> {
     let ctx = Ctx::new(model, data, &[]);
     Ok(ssr(&ctx.residuals(values, FIT_RTOL)?))
