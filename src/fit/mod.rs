@@ -47,7 +47,8 @@
 //! misfit, re-minimised over the other parameters, rises by `q^2 s^2` above its minimum. When
 //! another start of the multi-start ends in a different minimum whose misfit is within that
 //! same threshold of the best, every interval is widened to contain it (the data do not exclude
-//! it; the note says so).
+//! it; the note says so). The same holds for the minima found with `nu` held at the grid levels
+//! of the multi-start: any point within the threshold lies inside every profile interval.
 //!
 //! [`solve`]: crate::solve
 //! [`FIT_LM_STARTS`]: crate::tolerances::FIT_LM_STARTS
@@ -619,6 +620,8 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
     // the misfit along nu at the grid levels), and the full fit starts from the best levels.
     let mut last_error = String::from("no starting point gave a finite misfit");
     let mut starts_from: Vec<Vec<f64>> = Vec::new();
+    // every minimum met on the way (with nu held or not): all may widen the intervals
+    let mut probes: Vec<(f64, Vec<f64>)> = Vec::new();
     match model.index("nu").filter(|i| moving.contains(i)) {
         Some(inu) => {
             let held: Vec<usize> = moving.iter().copied().filter(|&k| k != inu).collect();
@@ -642,6 +645,7 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
                 levels.extend(best_of_level);
             }
             levels.sort_by(|a, b| a.0.total_cmp(&b.0));
+            probes.extend(levels.iter().cloned());
             starts_from.extend(levels.into_iter().take(FIT_LM_STARTS + 1).map(|(_, v)| v));
         }
         None => starts_from.extend(screened.iter().take(FIT_LM_STARTS).map(|(_, v)| v.clone())),
@@ -662,7 +666,8 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
         });
     }
     let best = minima.remove(0);
-    analyse(&ctx, best, &minima, fixed, &free, &moving)
+    probes.extend(minima);
+    analyse(&ctx, best, &probes, fixed, &free, &moving)
 }
 
 /// The weighted sum of squared residuals of `data` for the parameter `values` (forward solves at
@@ -899,12 +904,14 @@ fn analyse(
                 }
             }
         }
-        // another minimum of the misfit within the likelihood-ratio threshold: the data do not
-        // exclude it, so every interval is widened to contain it (and judged again by its reach)
+        // another point met by the fit (a minimum of another start, or of a nu level with nu
+        // held) whose misfit is within the likelihood-ratio threshold: the profile of every
+        // parameter lies at or below it there, so every interval is widened to contain it (and
+        // judged again by its reach)
         for (other_ssr, other) in others.iter().filter(|o| o.0 - best_ssr <= threshold) {
             let note = format!(
-                "interval widened to a second minimum of the misfit (SSR {other_ssr:.4e} against \
-                 {best_ssr:.4e})"
+                "interval widened to another point within the 95 % threshold of the misfit (SSR \
+                 {other_ssr:.4e} against {best_ssr:.4e})"
             );
             let widen = |e: &mut Estimate, v: f64, to_coord: &dyn Fn(f64) -> f64| {
                 let (Some((lo, hi)), Some(x), false) = (e.ci95, e.value, e.fixed) else {
