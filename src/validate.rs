@@ -1320,7 +1320,7 @@ pub const PERFORMANCE: FilledSection = FilledSection {
 /// The round trip of `fit`, filled by `mdr-impact fit-study`.
 pub const FIT_STUDY: FilledSection = FilledSection {
     key: "fit-study",
-    heading: "10. Fitting drop tests: round trip",
+    heading: "11. Fitting drop tests: round trip",
     command: "mdr-impact fit-study --reps 200 --report VALIDATION.md",
 };
 

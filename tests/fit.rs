@@ -1,6 +1,6 @@
 //! `fit`: round trip on synthetic drop tests, identifiability from CoR alone, degenerate data,
 //! and the CLI's JSON keys. The 200-repetition study is `mdr-impact fit-study` (VALIDATION.md
-//! section 10) and the ignored test below.
+//! section 11) and the ignored test below.
 
 use std::path::Path;
 use std::process::Command;
@@ -36,7 +36,7 @@ fn config(reps: usize, contact_times: bool) -> study::StudyConfig {
 /// least `min` of the identifiable ones; and the quantity must be reported identifiable in at
 /// least `min_identifiable` of the repetitions (`nu` is the weakest: a second minimum or a wide
 /// interval makes it not identifiable in some: 12 of 200 with contact times, 25 of 200 without,
-/// VALIDATION.md section 10).
+/// VALIDATION.md section 11).
 fn assert_coverage(r: &study::StudyReport, name: &str, min: f64, min_identifiable: f64) {
     let t = r.tally(name).unwrap();
     let reps = r.config.reps - r.failures.len();
@@ -311,7 +311,7 @@ fn cli_json_has_the_documented_keys() {
 }
 
 #[test]
-#[ignore = "the 200-repetition round trip (minutes); its numbers are in VALIDATION.md section 10"]
+#[ignore = "the 200-repetition round trip (minutes); its numbers are in VALIDATION.md section 11"]
 fn round_trip_study_200() {
     for contact_times in [true, false] {
         let r = study::run(&config(200, contact_times), &|| {}).unwrap();
