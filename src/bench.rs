@@ -1237,3 +1237,45 @@ pub fn general_timing_table(rows: &[GeneralTiming], random: Option<&[RowTiming]>
     }
     s
 }
+
+/// The time of one `fit` of 10 drops (CoR and contact time, 1 % noise, the round-trip study's
+/// material and sphere, repetition 0 of seed 1), on the calling thread.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FitTiming {
+    /// Wall time of the fit (s).
+    pub seconds: f64,
+    /// Forward solves it made.
+    pub solves: usize,
+    /// Drops fitted.
+    pub drops: usize,
+}
+
+/// Time one 10-drop fit ([`FitTiming`]).
+pub fn fit_timing() -> Result<FitTiming> {
+    use crate::fit::{self, study};
+    let cfg = study::StudyConfig {
+        reps: 1,
+        seed: 1,
+        noise: 0.01,
+        velocities: 10,
+        contact_times: true,
+    };
+    let data = study::noisy(&study::exact_data(&cfg)?, cfg.noise, cfg.seed, 0);
+    let model = fit::Model::new(fit::ModelKind::StandardSolid, None, vec![])?;
+    let t0 = Instant::now();
+    let r = fit::fit(&model, &data, &[None; 4])?;
+    Ok(FitTiming {
+        seconds: t0.elapsed().as_secs_f64(),
+        solves: r.solves,
+        drops: data.observations.len(),
+    })
+}
+
+/// One line on the fit's time for the bench output and the performance section.
+pub fn fit_timing_text(t: &FitTiming) -> String {
+    format!(
+        "- `fit`, standard solid, {} drops with CoR and contact time (one core): {:.2} s, {} \
+         forward solves.\n",
+        t.drops, t.seconds, t.solves
+    )
+}

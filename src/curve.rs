@@ -36,7 +36,7 @@ use rayon::prelude::*;
 
 use crate::error::{Error, Result};
 use crate::impact::Impact;
-use crate::output::{fmt, write_atomic};
+use crate::output::fmt;
 use crate::solver::{solve, SolveOptions};
 use crate::theory::HERTZ_I;
 
@@ -351,18 +351,10 @@ pub fn write_outputs(dir: &Path, curve: &Curve, log: bool) -> Result<Written> {
     let svg = dir.join("curve.svg");
     let csv_body = csv_text(&curve.rows);
     let svg_body = crate::plot::cor_curve_svg(&svg, curve, log)?;
-    write_atomic(&csv, |w| {
-        w.write_all(csv_body.as_bytes())
-            .map_err(|e| Error::io(&csv, e))
-    })?;
-    if let Err(e) = write_atomic(&svg, |w| {
-        w.write_all(svg_body.as_bytes())
-            .map_err(|e| Error::io(&svg, e))
-    }) {
-        // both or neither
-        let _ = std::fs::remove_file(&csv);
-        return Err(e);
-    }
+    crate::output::write_all_atomic(&[
+        (csv.as_path(), csv_body.as_bytes()),
+        (svg.as_path(), svg_body.as_bytes()),
+    ])?;
     Ok(Written { csv, svg })
 }
 

@@ -161,6 +161,34 @@ pub enum Error {
     /// A request that the chosen solver does not support.
     #[error("{0}")]
     Unsupported(String),
+    /// `fit`: fewer measured values (CoRs and contact times) than free parameters.
+    #[error(
+        "fit: {observations} measured values cannot determine {parameters} free parameters: add \
+         drops at other velocities or contact times, or fix parameters with --fix"
+    )]
+    TooFewObservations {
+        /// Measured values (one per CoR, one per contact time).
+        observations: usize,
+        /// Free parameters of the fit.
+        parameters: usize,
+    },
+    /// `fit`: every CoR equals 1, so no viscoelastic parameter is identifiable.
+    #[error(
+        "fit: all {observations} CoRs equal 1: elastic data determine no viscoelastic parameter \
+         (g_1, eta and the groups p2, eta / g_inf^(3/5) are not identifiable)"
+    )]
+    ElasticData {
+        /// Number of drops.
+        observations: usize,
+    },
+    /// `fit`: no start of the least-squares fit reached a finite misfit.
+    #[error("fit: no start of the least-squares fit reached a finite misfit ({starts} tried; last: {last})")]
+    FitFailed {
+        /// Starts tried.
+        starts: usize,
+        /// Why the last one failed.
+        last: String,
+    },
     /// File system or output error.
     #[error("{path}: {message}")]
     Io {

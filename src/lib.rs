@@ -11,6 +11,8 @@
 //!   (theory notes §8);
 //! - [`impact`]: Eqs. (10)–(11), scales and outcome; [`bodies`]: two colliding bodies (theory
 //!   notes §8);
+//! - [`fit`]: material parameters from drop tests, and which of them (or of the Eq. (11) groups)
+//!   the data determine;
 //! - [`mdr`]: the MDR foundation, Eqs. (4)–(9), with two time schemes;
 //! - [`theory`]: Hertz, Lee–Radok and Ting/Graham, independent of [`mdr`];
 //! - [`solver`]: solver choice and dispatch.
@@ -29,6 +31,7 @@ pub mod dem;
 pub mod error;
 pub mod fast;
 pub mod figures;
+pub mod fit;
 pub mod impact;
 pub mod indentation;
 pub mod lines;

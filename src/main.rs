@@ -236,6 +236,53 @@ enum Command {
     },
     /// Regenerate the paper's figures (SVG), the data behind them (CSV) and the result tables.
     Figures(mdr_impact::figures::FigureArgs),
+    /// Identify material parameters from drop tests (CSV v0,cor[,cor_sd,contact_time,
+    /// contact_time_sd,setup]); writes DIR/fit.toml and DIR/fit.svg.
+    Fit {
+        /// The data file.
+        data: PathBuf,
+        /// Scene whose sphere was dropped (rows without a setup column); default scene if absent.
+        #[arg(long)]
+        scene: Option<PathBuf>,
+        /// standard-solid or prony:N (N fixed log-spaced times, fitted moduli).
+        #[arg(long, default_value = "standard-solid")]
+        model: String,
+        /// Fix a parameter, name=value in SI (g_inf, g_1, eta, nu, k_0; prony: g_inf, g_1..g_N,
+        /// nu, k_0); repeatable.
+        #[arg(long = "fix", value_name = "NAME=VALUE")]
+        fix: Vec<String>,
+        /// Prony times MIN:MAX (s), log-spaced; default: the measured contact times / 100 to x 100.
+        #[arg(long = "tau-range")]
+        tau_range: Option<String>,
+        /// Output folder for fit.toml and fit.svg.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// Print one JSON object (SI) and nothing else on stdout.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Round trip of fit: synthetic drop tests from a known material with noise, fitted again;
+    /// prints the coverage of the 95 % intervals (with --report, fills its section of the report).
+    FitStudy {
+        /// Repetitions.
+        #[arg(long, default_value_t = 200)]
+        reps: usize,
+        /// Seed of the noise.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Drops (velocities) per repetition.
+        #[arg(long, default_value_t = 10)]
+        velocities: usize,
+        /// Relative noise of every measured value.
+        #[arg(long, default_value_t = 0.01)]
+        noise: f64,
+        /// Only the CoR-only study (default: both, with and without contact times).
+        #[arg(long)]
+        cor_only: bool,
+        /// Report whose fit section is replaced.
+        #[arg(long)]
+        report: Option<PathBuf>,
+    },
 }
 
 fn main() -> ExitCode {
@@ -568,6 +615,9 @@ fn run(cli: Cli) -> Result<(), Error> {
                 print!("{}", bench::general_euler_text(r));
                 Some(r)
             };
+            // one 10-drop fit (mdr-impact fit)
+            let fit_time = bench::fit_timing()?;
+            print!("{}", bench::fit_timing_text(&fit_time));
             let batch = if batch_rows > 0 {
                 let rows = batch::random_rows(batch_rows, 1)?;
                 let t0 = std::time::Instant::now();
@@ -606,6 +656,8 @@ fn run(cli: Cli) -> Result<(), Error> {
                     std::fs::read_to_string(&report).map_err(|e| Error::io(&report, e))?;
                 let mut section =
                     bench::summary(&points, &bench::machine(), batch, &timed, &general);
+                section.push('\n');
+                section.push_str(&bench::fit_timing_text(&fit_time));
                 if let Some(r) = euler_general {
                     section.push('\n');
                     section.push_str(&bench::general_euler_text(r));
@@ -708,6 +760,88 @@ fn run(cli: Cli) -> Result<(), Error> {
             let summary = sweep::run(&plan.points()?, &out, &opts)?;
             println!("{summary}");
             println!("rows in {}", out.display());
+            Ok(())
+        }
+        Command::Fit {
+            data,
+            scene,
+            model,
+            fix,
+            tau_range,
+            out,
+            json,
+        } => {
+            use mdr_impact::fit;
+            if out.as_os_str().is_empty() {
+                return Err(Error::EmptyPath { field: "--out" });
+            }
+            let kind = model.parse::<fit::ModelKind>()?;
+            let fixes = fix
+                .iter()
+                .map(|f| f.parse::<fit::Fix>())
+                .collect::<Result<Vec<_>, _>>()?;
+            let (scene, name) = match &scene {
+                Some(p) => (Scene::load(p)?, p.display().to_string()),
+                None => (Scene::default_scene(), "default scene".to_string()),
+            };
+            let sphere = fit::data::scene_sphere(&scene, &name)?;
+            let data = fit::data::read(&data, sphere, &name)?;
+            let taus = fit::prony_times(&kind, tau_range.as_deref(), &data)?;
+            let (model, fixed) = fit::setup_model(kind, &fixes, taus)?;
+            let result = fit::fit(&model, &data, &fixed)?;
+            let written = fit::report::write_outputs(&out, &result)?;
+            if json {
+                println!("{}", fit::report::json(&result));
+                eprintln!("material written to {}", written.toml.display());
+                eprintln!("plot written to {}", written.svg.display());
+            } else {
+                print!("{}", fit::report::summary(&result, Some(&written)));
+            }
+            Ok(())
+        }
+        Command::FitStudy {
+            reps,
+            seed,
+            velocities,
+            noise,
+            cor_only,
+            report,
+        } => {
+            use mdr_impact::fit::study;
+            let existing = match &report {
+                Some(p) => {
+                    let text = std::fs::read_to_string(p).map_err(|e| Error::io(p, e))?;
+                    validate::replace_filled(&text, &validate::FIT_STUDY, "")?;
+                    Some(text)
+                }
+                None => None,
+            };
+            let mut reports = Vec::new();
+            for contact_times in [true, false] {
+                if cor_only && contact_times {
+                    continue;
+                }
+                let cfg = study::StudyConfig {
+                    reps,
+                    seed,
+                    noise,
+                    velocities,
+                    contact_times,
+                };
+                let bar = progress_bar(reps as u64, "fit-study");
+                let r = study::run(&cfg, &|| bar.inc(1));
+                bar.finish_and_clear();
+                reports.push(r?);
+            }
+            let section = study::markdown(&reports);
+            print!("{section}");
+            if let (Some(p), Some(text)) = (&report, existing) {
+                let text = validate::replace_filled(&text, &validate::FIT_STUDY, &section)?;
+                output::write_atomic(p, |w| {
+                    w.write_all(text.as_bytes()).map_err(|e| Error::io(p, e))
+                })?;
+                println!("fit section of {} updated", p.display());
+            }
             Ok(())
         }
         Command::Figures(args) => {

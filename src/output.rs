@@ -26,6 +26,20 @@ pub fn write_atomic(path: &Path, write: impl FnOnce(&mut dyn Write) -> Result<()
     Ok(())
 }
 
+/// Write several files atomically ([`write_atomic`]), all or none: when one fails, the ones
+/// already written by this call are removed again.
+pub fn write_all_atomic(files: &[(&Path, &[u8])]) -> Result<()> {
+    for (k, (path, body)) in files.iter().enumerate() {
+        if let Err(e) = write_atomic(path, |w| w.write_all(body).map_err(|e| Error::io(path, e))) {
+            for (done, _) in &files[..k] {
+                let _ = std::fs::remove_file(done);
+            }
+            return Err(e);
+        }
+    }
+    Ok(())
+}
+
 /// Write a history as CSV with the header `t,d,v,force,a` (SI: s, m, m/s, N, m).
 pub fn write_history_csv(path: &Path, h: &History) -> Result<()> {
     write_atomic(path, |w| {

@@ -36,3 +36,31 @@ pub const MDR_SAFETY: f64 = 0.5;
 /// Uniform samples of an impact history from the reference solver (requested by `auto` or
 /// `reference` with histories).
 pub const HISTORY_SAMPLES: usize = 1001;
+
+/// `fit`: requested relative accuracy of every forward solve (well below 1 % data noise, and
+/// small enough that central differences with [`FIT_FD_STEP`] stay accurate to about 1e-5).
+pub const FIT_RTOL: f64 = 1e-8;
+/// `fit`: requested relative accuracy of the forward solves that screen the starting points.
+pub const FIT_SCREEN_RTOL: f64 = 1e-5;
+/// `fit`: step of the central differences in the fit coordinates (log moduli, logistic `nu`).
+pub const FIT_FD_STEP: f64 = 1e-3;
+/// `fit`: a singular value of the weighted Jacobian at or below this fraction of the largest
+/// one spans a direction the data do not determine (structural non-identifiability).
+pub const FIT_NULL_RATIO: f64 = 1e-4;
+/// `fit`: a combination whose unit direction has a component above this in the null space is
+/// not identifiable.
+pub const FIT_NULL_COMPONENT: f64 = 1e-3;
+/// `fit`: a parameter whose 95 % interval reaches further than this in its coordinate (natural
+/// log of a modulus: a factor of 10 either way) is reported as not well determined.
+pub const FIT_MAX_HALF_WIDTH: f64 = std::f64::consts::LN_10;
+/// `fit`: relative tolerances (`ftol`, `xtol`, `gtol`) of the Levenberg-Marquardt iteration.
+pub const FIT_LM_TOL: f64 = 1e-9;
+/// `fit`: the Levenberg-Marquardt iteration stops after this many residual evaluations per
+/// free parameter (plus one).
+pub const FIT_LM_PATIENCE: usize = 40;
+/// `fit`: Levenberg-Marquardt runs started from the best screened points.
+pub const FIT_LM_STARTS: usize = 2;
+/// `fit`: step of the profile likelihood in a parameter's coordinate (a quarter decade).
+pub const FIT_PROFILE_STEP: f64 = std::f64::consts::LN_10 / 4.0;
+/// `fit`: steps of the profile likelihood on each side (four decades).
+pub const FIT_PROFILE_STEPS: usize = 16;

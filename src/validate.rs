@@ -1327,8 +1327,15 @@ pub const PYTHON: FilledSection = FilledSection {
     command: "python python/bench_cor.py --report VALIDATION.md",
 };
 
+/// The round trip of `fit`, filled by `mdr-impact fit-study`.
+pub const FIT_STUDY: FilledSection = FilledSection {
+    key: "fit-study",
+    heading: "11. Fitting drop tests: round trip",
+    command: "mdr-impact fit-study --reps 200 --report VALIDATION.md",
+};
+
 /// Every section filled by another command, in the order of the report.
-pub const FILLED: &[FilledSection] = &[STRESS, PERFORMANCE, PYTHON];
+pub const FILLED: &[FilledSection] = &[STRESS, PERFORMANCE, PYTHON, FIT_STUDY];
 
 /// Keep the bodies of the sections that other commands fill ([`FILLED`]) when `fresh` replaces
 /// `existing`.
