@@ -1274,8 +1274,8 @@ pub fn fit_timing() -> Result<FitTiming> {
 /// One line on the fit's time for the bench output and the performance section.
 pub fn fit_timing_text(t: &FitTiming) -> String {
     format!(
-        "- `fit`, standard solid, {} drops with CoR and contact time (one core): {:.2} s, {} \
-         forward solves.\n",
+        "`mdr-impact fit` of {} drops (standard solid, CoR and contact time, the round-trip \
+         study's data; one core): {:.2} s, {} forward solves.\n",
         t.drops, t.seconds, t.solves
     )
 }
