@@ -1108,11 +1108,23 @@ pub fn general_timing(budget: f64) -> Result<Vec<GeneralTiming>> {
         .collect()
 }
 
-/// `mdr-euler` against `fast` on the 3-term general material of the catalogue
-/// (`prony-3-elastic-bulk`), both asked for rtol 1e-4 (one core, CoR only, medians within
-/// `budget` seconds each): `(euler seconds, euler error, fast seconds, fast error)`, errors
+/// `mdr-euler` against `fast` on one general material at equal requested accuracy.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EulerSpeedup {
+    /// Case id ([`crate::catalogue::GENERAL`]).
+    pub id: &'static str,
+    /// Shear terms of the material and terms of its `G_eq`.
+    pub terms: (usize, usize),
+    /// `mdr-euler`: median time (s) and relative CoR error.
+    pub euler: (f64, f64),
+    /// `fast`: median time (s) and relative CoR error.
+    pub fast: (f64, f64),
+}
+
+/// `mdr-euler` against `fast` on the first general material of the catalogue (3 shear terms),
+/// both asked for rtol 1e-4 (one core, CoR only, medians within `budget` seconds each), errors
 /// relative to `reference` at rtol 1e-10.
-pub fn general_euler_speedup(budget: f64) -> Result<(f64, f64, f64, f64)> {
+pub fn general_euler_speedup(budget: f64) -> Result<EulerSpeedup> {
     let case = &crate::catalogue::GENERAL[0];
     let imp = case.impact()?;
     let opts = |solver, rtol| SolveOptions {
@@ -1127,17 +1139,27 @@ pub fn general_euler_speedup(budget: f64) -> Result<(f64, f64, f64, f64)> {
         let (t, _) = median_time(budget, || solve(&imp, &o).map(|_| ()))?;
         Ok((t, e))
     };
-    let (te, ee) = run(SolverKind::MdrEuler)?;
-    let (tf, ef) = run(SolverKind::Fast)?;
-    Ok((te, ee, tf, ef))
+    Ok(EulerSpeedup {
+        id: case.id,
+        terms: (
+            case.material()?.shear().terms().len(),
+            imp.canonical_relaxation().terms.len(),
+        ),
+        euler: run(SolverKind::MdrEuler)?,
+        fast: run(SolverKind::Fast)?,
+    })
 }
 
 /// One markdown paragraph of [`general_euler_speedup`].
-pub fn general_euler_text((te, ee, tf, ef): (f64, f64, f64, f64)) -> String {
+pub fn general_euler_text(r: &EulerSpeedup) -> String {
+    let ((te, ee), (tf, ef)) = (r.euler, r.fast);
     format!(
         "`mdr-euler` (the paper's explicit Euler, on the general element network) against `fast` on the \
-         3-term material `prony-3-elastic-bulk` (6 `G_eq` terms), both at rtol 1e-4: `mdr-euler` {} \
+         {}-term material `{}` ({} `G_eq` terms), both at rtol 1e-4: `mdr-euler` {} \
          (CoR error {:.1e}), `fast` {} (CoR error {:.1e}): ratio {:.0}x (target at least {:.0}x: {}).\n",
+        r.terms.0,
+        r.id,
+        r.terms.1,
         fmt_time(te),
         ee,
         fmt_time(tf),

@@ -612,7 +612,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 None
             } else {
                 let r = bench::general_euler_speedup(budget)?;
-                print!("{}", bench::general_euler_text(r));
+                print!("{}", bench::general_euler_text(&r));
                 Some(r)
             };
             // one 10-drop fit (mdr-impact fit)
@@ -660,7 +660,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 section.push_str(&bench::fit_timing_text(&fit_time));
                 if let Some(r) = euler_general {
                     section.push('\n');
-                    section.push_str(&bench::general_euler_text(r));
+                    section.push_str(&bench::general_euler_text(&r));
                 }
                 section.push_str(&format!(
                     "\n`mdr-impact curve --v0 0.01:10:200 --log` on the default scene (200 \

@@ -1,5 +1,5 @@
 //! Skip what the impact does not need: Prony terms far outside the contact window, replaced by
-//! their limit forms with a bounded error (a general material's `G_eq` can have dozens of terms
+//! their limit forms with an estimated error kept within a share of `rtol` (a general material's `G_eq` can have dozens of terms
 //! over 20 decades; the work per step of `fast` grows with the terms).
 //!
 //! # Limit forms
@@ -174,10 +174,14 @@ pub(super) fn solve(
     let t0 = contact_time_estimate(c_inf, live);
     let (mut times, mut e) = ((2.0 * t0, 0.5 * t0), 0.5);
     let mut spent = crate::impact::Work::default();
+    let mut tried: Option<Vec<(f64, f64)>> = None;
     for _ in 0..REDUCE_ATTEMPTS {
         let Some(red) = reduce(c_inf, live, times, e, REDUCE_SHARE * rtol) else {
             break;
         };
+        if tried.as_ref() == Some(&red.terms) {
+            break; // the same reduction again would fail again
+        }
         let Ok(mut out) = dispatch(c_inf, &red.terms, (1.0 - REDUCE_SHARE) * rtol) else {
             break; // the unreduced solve decides (and reports its own refusal)
         };
@@ -189,6 +193,7 @@ pub(super) fn solve(
             out.work = spent;
             return Ok(out);
         }
+        tried = Some(red.terms);
         // reduce again from what the solve found (its contact time on both sides)
         times = (times.0.max(out.contact_time), times.1.min(out.contact_time));
         e = e.min(out.cor);
