@@ -694,7 +694,8 @@ pub struct DemReport {
     pub warnings: Vec<String>,
 }
 
-/// How the DEM code sees `impact`'s contact, and a warning when a wall of finite mass moves.
+/// How the DEM code sees `impact`'s contact, and a warning when a wall of finite mass moves or
+/// a fixed body is not flat.
 fn geometry(impact: &Impact) -> (Geometry, Option<String>) {
     let Some(b) = impact.bodies() else {
         return (Geometry::Wall, None);
@@ -704,7 +705,16 @@ fn geometry(impact: &Impact) -> (Geometry, Option<String>) {
     let heavy = a.mass().is_infinite() || bb.mass().is_infinite();
     match (wall, heavy) {
         (false, false) => (Geometry::Pair, None),
-        (_, true) => (Geometry::Wall, None),
+        (true, true) => (Geometry::Wall, None),
+        (false, true) => (
+            Geometry::Wall,
+            Some(
+                "a body of infinite mass has a finite radius: DEM walls are flat, so the DEM \
+                 code uses the particle's radius where these parameters assume the effective \
+                 radius"
+                    .into(),
+            ),
+        ),
         (true, false) => (
             Geometry::Wall,
             Some(
@@ -972,8 +982,15 @@ impl DemReport {
         );
         s.push_str("# tangential: frictionless placeholder, set your own friction model\n");
         s.push_str("pair_style granular\n");
-        if self.geometry == Geometry::Wall {
-            s.push_str("# particle-particle contacts: your own pair_coeff lines\n");
+        match self.geometry {
+            Geometry::Wall => {
+                s.push_str("# particle-particle contacts: your own pair_coeff lines\n")
+            }
+            // LAMMPS refuses to run without the like-type coefficients too
+            Geometry::Pair => s.push_str(
+                "# like-type contacts (pair_coeff 1 1, pair_coeff 2 2): your own lines; \
+                 these parameters are for the 1-2 contact\n",
+            ),
         }
         let (on, off) = if self.viscoelastic_is_better() {
             (visco, constant)

@@ -181,6 +181,20 @@ pub enum Error {
         /// Number of drops.
         observations: usize,
     },
+    /// `fit`: standard deviations given for some measured values but not for all of them (one
+    /// noise scale cannot be estimated for residuals of different scales).
+    #[error(
+        "fit: {column} is given for {given} of {values} measured values: give the standard \
+         deviations of every CoR and contact time, or of none"
+    )]
+    PartialNoise {
+        /// The column (`cor_sd` or `contact_time_sd`).
+        column: &'static str,
+        /// Values that have it.
+        given: usize,
+        /// Values that need it.
+        values: usize,
+    },
     /// `fit`: no start of the least-squares fit reached a finite misfit.
     #[error("fit: no start of the least-squares fit reached a finite misfit ({starts} tried; last: {last})")]
     FitFailed {

@@ -110,6 +110,27 @@ fn degenerate_data_give_clear_errors() {
             parameters: 3
         }
     );
+    // standard deviations for some values only: one noise scale cannot cover both kinds
+    let partial = parse("v0,cor,cor_sd\n1,0.5,0.01\n2,0.45,\n3,0.4,0.01\n4,0.38,0.01\n").unwrap();
+    assert_eq!(
+        fit::fit(&m, &partial, &[None; 4]).unwrap_err(),
+        Error::PartialNoise {
+            column: "cor_sd",
+            given: 3,
+            values: 4
+        }
+    );
+    let no_time_sd =
+        parse("v0,cor,cor_sd,contact_time\n1,0.5,0.01,1e-3\n2,0.45,0.01,9e-4\n3,0.4,0.01,8e-4\n")
+            .unwrap();
+    assert_eq!(
+        fit::fit(&m, &no_time_sd, &[None; 4]).unwrap_err(),
+        Error::PartialNoise {
+            column: "contact_time_sd",
+            given: 0,
+            values: 3
+        }
+    );
     let elastic = parse("v0,cor\n1,1\n2,1\n3,1\n").unwrap();
     assert_eq!(
         fit::fit(&m, &elastic, &[None; 4]).unwrap_err(),
@@ -189,6 +210,13 @@ fn no_degrees_of_freedom_means_not_identifiable() {
     assert!(f.noise_scale.is_none());
     for e in f.parameters.iter().chain(&f.groups).filter(|e| !e.fixed) {
         assert!(!e.identifiable && e.ci95.is_none(), "{e:?}");
+    }
+    // CoR data leave the modulus scale open: no value for the moduli and the viscosity, even
+    // with fewer measured values than free coordinates (the SVD then has fewer rows than
+    // columns, and the null directions without a row must count too)
+    for name in ["g_inf", "g_1", "eta"] {
+        let e = f.parameters.iter().find(|e| e.name == name).unwrap();
+        assert!(e.value.is_none(), "{e:?}");
     }
     assert!(
         f.verdict.starts_with("determined by the data: none"),
@@ -388,5 +416,73 @@ fn setups_name_scenes_with_different_spheres() {
         assert_eq!(e["identifiable"], true, "{name}: {e}");
         let v = e["value"].as_f64().unwrap();
         assert!((v / study::TRUTH[i] - 1.0).abs() < 1e-4, "{name}: {v}");
+    }
+}
+
+/// A fixed bulk modulus breaks the scale symmetry of CoR data (scaling the moduli changes
+/// `nu = f(k_0 / g_inf)`), so the fit must not hold `g_inf` at an arbitrary value: on exact
+/// CoR-only data of a material with `g_inf = 3 MPa` and its `k_0` fixed it finds that `g_inf`.
+#[test]
+fn fixed_bulk_modulus_lets_cor_data_reach_g_inf() {
+    use mdr_impact::{solve, Impact, Material, SolveOptions};
+    let (g_inf, nu) = (3.0e6, 0.45);
+    let k_0 = 2.0 * g_inf * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu));
+    let material = Material::with_poisson(g_inf, 3.0e7, 2.5e3, nu).unwrap();
+    let opts = SolveOptions {
+        rtol: 1e-10,
+        ..Default::default()
+    };
+    let mut text = String::from("v0,cor\n");
+    for i in 0..10 {
+        let v0 = 0.01 * 10f64.powf(4.0 * i as f64 / 9.0);
+        let e = solve(&Impact::new(sphere(), v0, material).unwrap(), &opts)
+            .unwrap()
+            .cor;
+        text.push_str(&format!("{v0:e},{e:e}\n"));
+    }
+    let m = Model::new(ModelKind::StandardSolid, Some(k_0), vec![]).unwrap();
+    let f = fit::fit(&m, &parse(&text).unwrap(), &[None; 3]).unwrap();
+    let v = f.get("g_inf").unwrap().value.unwrap();
+    assert!((v / g_inf - 1.0).abs() < 1e-3, "g_inf = {v}");
+}
+
+/// The study refuses inputs it cannot run (no repetition, one velocity, no or NaN noise)
+/// before any fit, naming the input.
+#[test]
+fn study_inputs_are_checked() {
+    for (cfg, field) in [
+        (
+            study::StudyConfig {
+                reps: 0,
+                ..config(1, false)
+            },
+            "reps",
+        ),
+        (
+            study::StudyConfig {
+                velocities: 1,
+                ..config(1, false)
+            },
+            "velocities",
+        ),
+        (
+            study::StudyConfig {
+                noise: 0.0,
+                ..config(1, false)
+            },
+            "noise",
+        ),
+        (
+            study::StudyConfig {
+                noise: f64::NAN,
+                ..config(1, false)
+            },
+            "noise",
+        ),
+    ] {
+        match study::run(&cfg, &|| {}) {
+            Err(Error::OutOfRange { field: f, .. }) => assert_eq!(f, field),
+            other => panic!("{field}: {other:?}"),
+        }
     }
 }

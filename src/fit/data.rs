@@ -113,6 +113,37 @@ impl Data {
     }
 
     /// Whether every standard deviation is given (then the noise scale is known).
+    /// Standard deviations are given for every measured value or for none (of both kinds):
+    /// with some missing, one noise scale would have to cover weighted and unweighted residuals
+    /// of different scales.
+    ///
+    /// # Errors
+    /// [`Error::PartialNoise`] naming the column that is given only in part (or missing where
+    /// the other is given).
+    pub fn check_noise(&self) -> Result<()> {
+        let obs = &self.observations;
+        let cor_given = obs.iter().filter(|o| o.cor_sd.is_some()).count();
+        let times: Vec<_> = obs.iter().filter(|o| o.contact_time.is_some()).collect();
+        let time_given = times.iter().filter(|o| o.contact_time_sd.is_some()).count();
+        let any = cor_given > 0 || time_given > 0;
+        if any && cor_given < obs.len() {
+            return Err(Error::PartialNoise {
+                column: "cor_sd",
+                given: cor_given,
+                values: obs.len(),
+            });
+        }
+        if any && time_given < times.len() {
+            return Err(Error::PartialNoise {
+                column: "contact_time_sd",
+                given: time_given,
+                values: times.len(),
+            });
+        }
+        Ok(())
+    }
+
+    /// Whether the standard deviation of every measured value is given.
     pub fn noise_known(&self) -> bool {
         self.observations.iter().all(|o| {
             o.cor_sd.is_some() && (o.contact_time.is_none() || o.contact_time_sd.is_some())

@@ -581,6 +581,7 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
             model.check_value(i, *v)?;
         }
     }
+    data.check_noise()?;
     if data.observations.iter().all(|o| o.cor == 1.0) {
         return Err(Error::ElasticData {
             observations: data.observations.len(),
@@ -589,7 +590,9 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
     let ctx = Ctx::new(model, data, fixed);
     let free: Vec<usize> = (0..np).filter(|&i| fixed[i].is_none()).collect();
     // CoR only, with the scale free in g_inf, g_1 and eta: hold g_inf (module docs)
+    // (a fixed k_0 breaks that symmetry: scaling the moduli then changes nu)
     let hold = model.kind == ModelKind::StandardSolid
+        && model.k_0.is_none()
         && !data.has_contact_times()
         && fixed[..3].iter().all(Option::is_none);
     let moving: Vec<usize> = free
@@ -747,23 +750,28 @@ fn analyse(
         }
         c
     });
-    // the null-space component of a direction a (full numbering, normalised)
+    // the null-space component of a direction a (full numbering) over the free coordinates:
+    // the norm of what is left after projecting it onto the identified right singular vectors,
+    // relative to its free part (independent of the basis the SVD picks for the null space, and
+    // right when the SVD has fewer rows than free coordinates: n < p leaves p - n null
+    // directions without a row of v_t)
     let null_component = |a: &[f64]| -> f64 {
-        let norm = a.iter().map(|x| x * x).sum::<f64>().sqrt();
-        if norm == 0.0 {
+        let norm2 = free.iter().map(|&i| a[i] * a[i]).sum::<f64>();
+        if norm2 == 0.0 {
             return 0.0;
         }
-        (0..sv.len())
-            .filter(|&k| !in_range(k))
+        let in_span: f64 = (0..sv.len())
+            .filter(|&k| in_range(k))
             .map(|k| {
-                free.iter()
+                let p = free
+                    .iter()
                     .enumerate()
                     .map(|(b, &ib)| v_t[(k, b)] * a[ib])
-                    .sum::<f64>()
-                    .abs()
-                    / norm
+                    .sum::<f64>();
+                p * p
             })
-            .fold(0.0, f64::max)
+            .sum();
+        (1.0 - in_span / norm2).max(0.0).sqrt()
     };
     let estimate = |name: String,
                     unit: &'static str,

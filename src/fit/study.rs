@@ -40,6 +40,30 @@ pub struct StudyConfig {
     pub contact_times: bool,
 }
 
+impl StudyConfig {
+    /// The study's inputs in range: at least one repetition, at least two velocities, a finite
+    /// positive noise level (its standard deviation weights the residuals).
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfRange`] naming `reps`, `velocities` or `noise`.
+    pub fn check(&self) -> Result<()> {
+        crate::error::check("reps", self.reps as f64, self.reps >= 1, "1 <= reps")?;
+        crate::error::check(
+            "velocities",
+            self.velocities as f64,
+            self.velocities >= 2,
+            "2 <= velocities",
+        )?;
+        crate::error::check(
+            "noise",
+            self.noise,
+            self.noise > 0.0 && self.noise.is_finite(),
+            "0 < noise < inf (relative)",
+        )
+        .map(|_| ())
+    }
+}
+
 /// One repetition's outcome for one parameter or group.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Check {
@@ -186,6 +210,7 @@ impl StudyReport {
 
 /// Run the study (repetitions in parallel); `tick` after each repetition.
 pub fn run(cfg: &StudyConfig, tick: &(dyn Fn() + Sync)) -> Result<StudyReport> {
+    cfg.check()?;
     let exact = exact_data(cfg)?;
     let results: Vec<(u64, Result<Vec<Check>>)> = (0..cfg.reps as u64)
         .into_par_iter()
