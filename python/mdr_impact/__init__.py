@@ -77,12 +77,15 @@ __all__ = [
 
 
 def _floats(name, x):
-    """``x`` as a float64 array; a value numpy cannot read as real numbers is an ``Error``."""
+    """``x`` as a float64 array; anything but real numbers (strings, complex numbers, ``None``,
+    objects) is an ``Error`` naming ``name``, never silently converted."""
     try:
-        a = np.asarray(x, dtype=np.float64)
+        a = np.asarray(x)
     except (TypeError, ValueError) as e:
         raise Error(f"{name}: not a real number or array of real numbers ({e})") from None
-    return a
+    if a.dtype.kind not in "biuf":
+        raise Error(f"{name}: not a real number or array of real numbers (dtype {a.dtype})")
+    return a.astype(np.float64, copy=False)
 
 
 def cor(nu, p2, p3, rtol=DEFAULT_RTOL, solver="auto", full_output=False):
@@ -137,7 +140,12 @@ def cor(nu, p2, p3, rtol=DEFAULT_RTOL, solver="auto", full_output=False):
     >>> e.shape
     (4, 3)
     """
-    arrays = np.broadcast_arrays(_floats("nu", nu), _floats("p2", p2), _floats("p3", p3))
+    try:
+        arrays = np.broadcast_arrays(_floats("nu", nu), _floats("p2", p2), _floats("p3", p3))
+    except ValueError as e:
+        if isinstance(e, Error):
+            raise
+        raise Error(f"nu, p2, p3: shapes cannot be broadcast together ({e})") from None
     shape = arrays[0].shape
     flat = [np.ascontiguousarray(a, dtype=np.float64).reshape(-1) for a in arrays]
     c, t, d = _core.cor_groups(flat[0], flat[1], flat[2], list(shape), float(rtol), str(solver))

@@ -52,7 +52,7 @@ def test_empty_and_non_contiguous_inputs():
 
 
 def test_incompatible_shapes_raise_value_error():
-    with pytest.raises(ValueError):
+    with pytest.raises(mi.Error, match="^nu, p2, p3: shapes cannot be broadcast together"):
         mi.cor(np.zeros(3) + 0.3, np.ones(4), 1.0)
 
 
@@ -92,6 +92,12 @@ def test_bad_options_and_types_raise():
         mi.cor(0.3, 1.0, 1.0, solver="foo")
     with pytest.raises(mi.Error, match="^nu: not a real number"):
         mi.cor("abc", 1.0, 1.0)
+    # numbers in strings, complex numbers and None are refused, never converted
+    for bad in ["0.45", 0.45 + 0.1j, np.array([0.3, 0.4 + 0j]), None]:
+        with pytest.raises(mi.Error, match="^nu: not a real number"):
+            mi.cor(bad, 1.0, 1.0)
+    # integers and booleans are numbers
+    assert mi.cor(0, 1, 1) == mi.cor(0.0, 1.0, 1.0)
 
 
 def test_refused_solve_raises_not_nan():
