@@ -1127,11 +1127,7 @@ pub struct EulerSpeedup {
 pub fn general_euler_speedup(budget: f64) -> Result<EulerSpeedup> {
     let case = &crate::catalogue::GENERAL[0];
     let imp = case.impact()?;
-    let opts = |solver, rtol| SolveOptions {
-        solver,
-        rtol,
-        ..Default::default()
-    };
+    let opts = SolveOptions::with;
     let truth = solve(&imp, &opts(SolverKind::Reference, 1e-10))?.cor;
     let run = |solver| -> Result<(f64, f64)> {
         let o = opts(solver, 1e-4);

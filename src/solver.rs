@@ -107,6 +107,15 @@ impl Default for SolveOptions {
 }
 
 impl SolveOptions {
+    /// `solver` at `rtol`, everything else at its default (CoR only, no explicit resolution).
+    pub fn with(solver: SolverKind, rtol: f64) -> Self {
+        Self {
+            solver,
+            rtol,
+            ..Default::default()
+        }
+    }
+
     /// Validate the options: `1e-12 <= rtol <= 0.1`; an explicit resolution needs
     /// `2 <= elements <= 10^6` and `4 <= steps <= 10^9` ([`Error::OutOfRange`] naming the field),
     /// and applies to the MDR schemes only (`mdr`, `mdr-euler`, and `auto`, which then uses

@@ -819,11 +819,7 @@ pub fn general_table() -> Result<Table> {
                 let inv = theory::bromwich::equivalent_relaxation_at(material, tt)?;
                 check = check.max(((g_eq.eval(tt) - inv) / inv).abs());
             }
-            let opts = |solver, rtol| SolveOptions {
-                solver,
-                rtol,
-                ..Default::default()
-            };
+            let opts = SolveOptions::with;
             let truth = solve(imp, &opts(SolverKind::Reference, 1e-10))?.cor;
             let err = |solver, rtol| match solve(imp, &opts(solver, rtol)) {
                 Ok(o) => fmt_err((o.cor - truth) / truth),
@@ -882,11 +878,7 @@ pub fn two_body_table() -> Result<Table> {
         .par_iter()
         .map(|case| {
             let imp = case.impact()?;
-            let opts = |solver, rtol| SolveOptions {
-                solver,
-                rtol,
-                ..Default::default()
-            };
+            let opts = SolveOptions::with;
             let truth = solve(&imp, &opts(SolverKind::Reference, 1e-10))?.cor;
             let err = |solver, rtol| match solve(&imp, &opts(solver, rtol)) {
                 Ok(o) => fmt_err((o.cor - truth) / truth),
