@@ -4,8 +4,8 @@
 //! The work-precision study across accuracies is `mdr-impact bench`.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
-use mdr_impact::catalogue::impact_case;
-use mdr_impact::{mdr, solve, solver, SolveOptions, SolverKind};
+use mdr_impact::report::catalogue::impact_case;
+use mdr_impact::{solve, solvers, solvers::mdr, SolveOptions, SolverKind};
 
 const CASES: &[&str] = &[
     "dissipative-nu045",
@@ -43,7 +43,7 @@ fn foundation(c: &mut Criterion) {
     let mut g = c.benchmark_group("mdr-foundation");
     g.sample_size(20);
     let imp = impact_case("dissipative-nu045").unwrap().impact().unwrap();
-    let mat = solver::canonical_material(&imp).unwrap();
+    let mat = solvers::canonical_material(&imp).unwrap();
     let layout = mdr::pilot(&mat.prony).unwrap();
     for scheme in [mdr::Scheme::Exponential, mdr::Scheme::Euler] {
         g.bench_function(

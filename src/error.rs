@@ -161,6 +161,53 @@ pub enum Error {
     /// A request that the chosen solver does not support.
     #[error("{0}")]
     Unsupported(String),
+    /// A text input (a flag, a key's value, a range) that cannot be read: what it is, what was
+    /// given and what is expected.
+    #[error("{what}: cannot read '{input}': expected {expected}")]
+    Parse {
+        /// The flag or key (e.g. `"--v0"`).
+        what: &'static str,
+        /// The text as given (escaped with [`escape_text`]).
+        input: String,
+        /// What would have been accepted, in words.
+        expected: String,
+    },
+    /// A valid request that this solver or command does not handle (a capability refusal).
+    #[error("{solver}: {what}")]
+    NotSupported {
+        /// The solver or command that refuses.
+        solver: &'static str,
+        /// What it does not support and what to use instead.
+        what: String,
+    },
+    /// A Prony series with more terms than a solver handles.
+    #[error("{solver}: {terms} prony terms exceed its limit of {max}")]
+    TooManyTerms {
+        /// The solver that refuses.
+        solver: &'static str,
+        /// Terms of the equivalent relaxation function after merging.
+        terms: usize,
+        /// The solver's cap.
+        max: usize,
+    },
+    /// Two bodies that do not make a collision (both rigid, ...).
+    #[error("{reason}")]
+    InvalidBodies {
+        /// What is wrong, in words.
+        reason: &'static str,
+    },
+    /// An error with the place it arose: a file, a table, a body, a row or a velocity.
+    #[error("{place}: {source}")]
+    In {
+        /// Where (e.g. `"scene.toml [material.shear]"`, `"body A"`, `"v0 = 2.5 m/s"`).
+        place: String,
+        /// What went wrong there.
+        #[source]
+        source: Box<Error>,
+    },
+    /// A broken invariant of the library: a bug, never the user's input.
+    #[error("internal error (please report): {0}")]
+    Internal(&'static str),
     /// `fit`: fewer measured values (CoRs and contact times) than free parameters.
     #[error(
         "fit: {observations} measured values cannot determine {parameters} free parameters: add \
@@ -213,7 +260,84 @@ pub enum Error {
     },
 }
 
+/// The broad kind of an [`Error`](enum@Error), for callers that react by kind rather than by variant.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ErrorKind {
+    /// The input is invalid: out of range, unreadable, inconsistent.
+    Input,
+    /// A valid request that a solver refused: accuracy, work or capability limits.
+    Refusal,
+    /// A fit could not be carried out on these data.
+    Fit,
+    /// Reading or writing files failed.
+    Io,
+    /// A bug in this library.
+    Internal,
+}
+
+impl ErrorKind {
+    /// Lower-case name (`input`, `refusal`, `fit`, `io`, `internal`).
+    pub fn name(self) -> &'static str {
+        match self {
+            ErrorKind::Input => "input",
+            ErrorKind::Refusal => "refusal",
+            ErrorKind::Fit => "fit",
+            ErrorKind::Io => "io",
+            ErrorKind::Internal => "internal",
+        }
+    }
+}
+
 impl Error {
+    /// The kind of this error; [`Error::In`] reports the kind of what it wraps. Exhaustive, so
+    /// that a new variant must be classified here.
+    pub fn kind(&self) -> ErrorKind {
+        match self {
+            Error::OutOfRange { .. }
+            | Error::PronyTerm { .. }
+            | Error::Scene(_)
+            | Error::Csv { .. }
+            | Error::EmptyPath { .. }
+            | Error::Parse { .. }
+            | Error::InvalidBodies { .. } => ErrorKind::Input,
+            Error::UnstableStep { .. }
+            | Error::WorkLimit { .. }
+            | Error::NotAsymptotic { .. }
+            | Error::StepSizeTooSmall { .. }
+            | Error::AccuracyNotReached { .. }
+            | Error::NoConvergence { .. }
+            | Error::Quadrature { .. }
+            | Error::NonFinite { .. }
+            | Error::NoSolver { .. }
+            | Error::Unsupported(_)
+            | Error::NotSupported { .. }
+            | Error::TooManyTerms { .. } => ErrorKind::Refusal,
+            Error::TooFewObservations { .. }
+            | Error::ElasticData { .. }
+            | Error::PartialNoise { .. }
+            | Error::FitFailed { .. } => ErrorKind::Fit,
+            Error::Io { .. } => ErrorKind::Io,
+            Error::Internal(_) => ErrorKind::Internal,
+            Error::In { source, .. } => source.kind(),
+        }
+    }
+
+    /// This error with the place it arose in front (`place: message`).
+    pub fn at(self, place: impl Into<String>) -> Self {
+        Error::In {
+            place: place.into(),
+            source: Box::new(self),
+        }
+    }
+
+    /// The innermost error under any [`Error::In`] wrappers.
+    pub fn root(&self) -> &Error {
+        match self {
+            Error::In { source, .. } => source.root(),
+            e => e,
+        }
+    }
+
     /// Helper for I/O errors that keeps the path.
     pub fn io(path: impl AsRef<std::path::Path>, err: impl std::fmt::Display) -> Self {
         Error::Io {
@@ -263,5 +387,17 @@ pub(crate) fn check(
             value,
             allowed,
         })
+    }
+}
+
+/// [`Error::at`] on a [`Result`]: `solve(..).at("v0 = 2 m/s")?`.
+pub trait ResultExt<T> {
+    /// The error, if any, with the place it arose in front.
+    fn at(self, place: impl FnOnce() -> String) -> Result<T>;
+}
+
+impl<T> ResultExt<T> for Result<T> {
+    fn at(self, place: impl FnOnce() -> String) -> Result<T> {
+        self.map_err(|e| e.at(place()))
     }
 }

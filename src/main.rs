@@ -6,11 +6,11 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 use mdr_impact::error::escape_text;
-use mdr_impact::indentation::Prescribed;
-use mdr_impact::solver::{force_curve, IndentMethod};
+use mdr_impact::solvers::indentation::Prescribed;
+use mdr_impact::solvers::{force_curve, IndentMethod};
 use mdr_impact::{
-    batch, output, plot, scene::Scene, solve, validate, Error, Groups, Impact, Material,
-    SolveOptions, SolverKind,
+    apps::batch, io::output, io::plot, io::scene::Scene, report::validate, solve, Error, Groups,
+    Impact, Material, SolveOptions, SolverKind,
 };
 
 #[derive(Parser)]
@@ -109,7 +109,7 @@ enum Command {
         #[arg(long, default_value = "auto")]
         solver: String,
         /// Requested relative accuracy of the CoR.
-        #[arg(long, default_value_t = mdr_impact::tolerances::DEFAULT_RTOL)]
+        #[arg(long, default_value_t = mdr_impact::model::tolerances::DEFAULT_RTOL)]
         rtol: f64,
     },
     /// Force curve of a prescribed indentation (AFM / nanoindentation): CSV t,d,a,force on stdout.
@@ -180,10 +180,10 @@ enum Command {
     /// rows that break the contract.
     Stress {
         /// Number of random rows.
-        #[arg(long, default_value_t = mdr_impact::stress::DEFAULT_ROWS)]
+        #[arg(long, default_value_t = mdr_impact::report::stress::DEFAULT_ROWS)]
         rows: usize,
         /// Seed of the rows.
-        #[arg(long, default_value_t = mdr_impact::stress::DEFAULT_SEED)]
+        #[arg(long, default_value_t = mdr_impact::report::stress::DEFAULT_SEED)]
         seed: u64,
         /// Folder for stress_outside.csv.
         #[arg(long, default_value = "validation")]
@@ -219,7 +219,7 @@ enum Command {
         #[arg(long, default_value = "auto")]
         solver: String,
         /// Requested relative accuracy of each CoR.
-        #[arg(long, default_value_t = mdr_impact::sweep::DEFAULT_SWEEP_RTOL)]
+        #[arg(long, default_value_t = mdr_impact::apps::sweep::DEFAULT_SWEEP_RTOL)]
         rtol: f64,
         /// Output CSV; rows already there are kept and their points skipped (resume).
         #[arg(long)]
@@ -228,14 +228,14 @@ enum Command {
         #[arg(long)]
         dimensional: bool,
         /// With --dimensional, also solve every K-th point in canonical units (0: never).
-        #[arg(long, value_name = "K", default_value_t = mdr_impact::sweep::DEFAULT_CHECK_EVERY)]
+        #[arg(long, value_name = "K", default_value_t = mdr_impact::apps::sweep::DEFAULT_CHECK_EVERY)]
         check_every: u64,
         /// Discard the rows already in the output file instead of resuming.
         #[arg(long)]
         fresh: bool,
     },
     /// Regenerate the paper's figures (SVG), the data behind them (CSV) and the result tables.
-    Figures(mdr_impact::figures::FigureArgs),
+    Figures(mdr_impact::report::figures::FigureArgs),
     /// Identify material parameters from drop tests (CSV v0,cor[,cor_sd,contact_time,
     /// contact_time_sd,setup]); writes DIR/fit.toml and DIR/fit.svg.
     Fit {
@@ -361,7 +361,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             log,
             out,
         } => {
-            use mdr_impact::curve;
+            use mdr_impact::apps::curve;
             // the input is checked before the scene is read or anything solved
             let range = curve::VelocityRange::parse(&v0, log)?;
             if out.as_os_str().is_empty() {
@@ -387,9 +387,9 @@ fn run(cli: Cli) -> Result<(), Error> {
             modulus,
             out,
         } => {
-            use mdr_impact::dem;
+            use mdr_impact::apps::dem;
             // the input is checked before the scene is read or anything solved
-            let range = mdr_impact::curve::VelocityRange::parse_optional_n(
+            let range = mdr_impact::apps::curve::VelocityRange::parse_optional_n(
                 &v0,
                 log,
                 dem::DEFAULT_VELOCITIES,
@@ -570,7 +570,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             budget,
             batch_rows,
         } => {
-            use mdr_impact::bench;
+            use mdr_impact::report::bench;
             let bar = progress_bar(bench::units(quick), "bench");
             let points = bench::run(quick, budget, &|| bar.inc(1))?;
             bar.finish_and_clear();
@@ -630,7 +630,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             };
             let curve_secs = {
                 // curve over 200 velocities of the default scene
-                use mdr_impact::curve;
+                use mdr_impact::apps::curve;
                 let scene = Scene::default_scene();
                 let range = curve::VelocityRange::parse("0.01:10:200", true)?;
                 let t0 = std::time::Instant::now();
@@ -681,7 +681,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             out,
             report,
         } => {
-            use mdr_impact::stress;
+            use mdr_impact::report::stress;
             // read first: a missing report or markers fail before minutes of work
             let existing = std::fs::read_to_string(&report).map_err(|e| Error::io(&report, e))?;
             validate::replace_stress(&existing, "")?;
@@ -715,7 +715,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
         }
         Command::Reference { out } => {
-            let written = mdr_impact::theory::generate_reference(&out)?;
+            let written = mdr_impact::solvers::theory::generate_reference(&out)?;
             println!(
                 "wrote {} files and {}",
                 written.files.len(),
@@ -736,7 +736,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             check_every,
             fresh,
         } => {
-            use mdr_impact::sweep;
+            use mdr_impact::apps::sweep;
             let plan = sweep::Plan {
                 nu: sweep::parse_nu_list(&nu)?,
                 log_p2: sweep::LogRange::parse("log-p2", &log_p2)?,
@@ -771,7 +771,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             out,
             json,
         } => {
-            use mdr_impact::fit;
+            use mdr_impact::apps::fit;
             if out.as_os_str().is_empty() {
                 return Err(Error::EmptyPath { field: "--out" });
             }
@@ -807,7 +807,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             cor_only,
             report,
         } => {
-            use mdr_impact::fit::study;
+            use mdr_impact::apps::fit::study;
             let existing = match &report {
                 Some(p) => {
                     let text = std::fs::read_to_string(p).map_err(|e| Error::io(p, e))?;
@@ -845,7 +845,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             Ok(())
         }
         Command::Figures(args) => {
-            let report = mdr_impact::figures::run(&args)?;
+            let report = mdr_impact::report::figures::run(&args)?;
             print!("{report}");
             Ok(())
         }

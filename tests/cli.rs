@@ -125,20 +125,20 @@ fn bad_input_is_one_line_and_nonzero() {
         "rtol",
     );
     assert_one_line_error(&run(&["run", "missing.toml"], dir.path()), "missing.toml");
-    let scene = mdr_impact::scene::DEFAULT_SCENE.replace("[impact]", "[impact]\nspeed = 3.0");
+    let scene = mdr_impact::io::scene::DEFAULT_SCENE.replace("[impact]", "[impact]\nspeed = 3.0");
     std::fs::write(dir.path().join("s.toml"), scene).unwrap();
     assert_one_line_error(
         &run(&["run", "s.toml"], dir.path()),
         "unknown field `speed`",
     );
-    let scene = mdr_impact::scene::DEFAULT_SCENE.replace("g_1 = 1.0e7", "g_1 = -1.0");
+    let scene = mdr_impact::io::scene::DEFAULT_SCENE.replace("g_1 = 1.0e7", "g_1 = -1.0");
     std::fs::write(dir.path().join("s.toml"), scene).unwrap();
     assert_one_line_error(
         &run(&["run", "s.toml"], dir.path()),
         "g_1 = -1e0 is out of range",
     );
     // explicit Euler step above the stability bound
-    let scene = mdr_impact::scene::DEFAULT_SCENE
+    let scene = mdr_impact::io::scene::DEFAULT_SCENE
         .replace(
             "name = \"auto\"",
             "name = \"mdr-euler\"\nelements = 20\nsteps = 10",
@@ -274,7 +274,7 @@ fn cor_groups_elastic_limit_and_refusals() {
 
 /// The default scene without outputs, `solver_lines` added to `[solver]`.
 fn scene_without_outputs(solver_lines: &str) -> String {
-    let head = mdr_impact::scene::DEFAULT_SCENE
+    let head = mdr_impact::io::scene::DEFAULT_SCENE
         .split("[output]")
         .next()
         .unwrap()
@@ -457,7 +457,7 @@ fn run_json_prints_one_object() {
 fn polymer_scenes_run() {
     use mdr_impact::{solve, SolveOptions, SolverKind};
     let dir = tempfile::tempdir().unwrap();
-    for case in mdr_impact::catalogue::POLYMERS {
+    for case in mdr_impact::report::catalogue::POLYMERS {
         let path = case.path();
         let o = run(&["run", path.to_str().unwrap(), "--json"], dir.path());
         assert!(o.status.success(), "{}: {}", case.id, stderr(&o));

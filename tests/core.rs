@@ -2,7 +2,8 @@
 //! the elastic (Hertz) case, convergence of both MDR schemes to one CoR, and every error variant.
 
 use approx::assert_relative_eq;
-use mdr_impact::material::ElementNetwork;
+use mdr_impact::model::material::ElementNetwork;
+use mdr_impact::solvers::mdr;
 use mdr_impact::*;
 use nalgebra::{Matrix2, Vector2};
 
@@ -147,7 +148,7 @@ fn elastic_mdr_is_hertz() {
             p3: 1.0,
         })
         .unwrap();
-        let mat = solver::canonical_material(&imp).unwrap();
+        let mat = solvers::canonical_material(&imp).unwrap();
         let o = mdr::solve_rtol(mdr::Scheme::Exponential, &mat, 1e-7, false, u64::MAX).unwrap();
         assert_relative_eq!(o.cor, 1.0, max_relative = 1e-6);
         let k = 4.0 / 3.0 * imp.standard_solid().unwrap().effective_modulus(1.0);
@@ -166,7 +167,7 @@ fn elastic_mdr_is_hertz() {
 fn euler_converges_to_mdr() {
     let imp = impact(0.45, 0.01, 1.0);
     let fine = solve(&imp, &opts(SolverKind::Mdr, 1e-7)).unwrap().cor;
-    let mat = solver::canonical_material(&imp).unwrap();
+    let mat = solvers::canonical_material(&imp).unwrap();
     let layout = mdr::pilot(&mat.prony).unwrap();
     let mut errs = Vec::new();
     for (n, m) in [(64, 512), (90, 1024), (128, 2048)] {
@@ -292,7 +293,7 @@ fn error_variants() {
     }
     assert!(matches!("euler".parse::<SolverKind>(), Err(Unsupported(_))));
     // a time loop that is not allowed enough steps to finish the contact
-    let mat = solver::canonical_material(&imp).unwrap();
+    let mat = solvers::canonical_material(&imp).unwrap();
     let layout = mdr::pilot(&mat.prony).unwrap();
     let mut grid = mdr::Grid::from_layout(&layout, 16, 32);
     grid.max_steps = 5;
@@ -301,7 +302,7 @@ fn error_variants() {
         Err(NoConvergence { .. })
     ));
     // a quadrature that cannot meet its tolerance
-    let q = mdr_impact::theory::quad::integrate(
+    let q = mdr_impact::math::quad::integrate(
         "oscillatory",
         |x: f64| (1e6 * x).sin() / x.sqrt().max(1e-300),
         0.0,

@@ -2,7 +2,7 @@
 //! physical line number, or the run is refused with an error naming that line; blank lines are
 //! skipped and reported; no raw control byte ever reaches a message.
 
-use mdr_impact::batch::{format_line_list, parse_rows, Rows};
+use mdr_impact::apps::batch::{format_line_list, parse_rows, Rows};
 use mdr_impact::{Error, Groups};
 
 /// Rows as (line, fields) pairs.

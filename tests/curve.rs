@@ -6,9 +6,9 @@ mod common;
 
 use common::{run, stderr};
 
-use mdr_impact::curve::{self, VelocityRange, CSV_HEADER};
-use mdr_impact::scene::Scene;
-use mdr_impact::theory::HertzImpact;
+use mdr_impact::apps::curve::{self, VelocityRange, CSV_HEADER};
+use mdr_impact::io::scene::Scene;
+use mdr_impact::solvers::theory::HertzImpact;
 use mdr_impact::{solve, Error, Impact, SolveOptions};
 
 fn no_progress() {}
@@ -249,7 +249,11 @@ fn cli_curve_writes_both_files() {
         .contains("<svg"));
 
     // a scene file and --out
-    std::fs::write(dir.path().join("s.toml"), mdr_impact::scene::DEFAULT_SCENE).unwrap();
+    std::fs::write(
+        dir.path().join("s.toml"),
+        mdr_impact::io::scene::DEFAULT_SCENE,
+    )
+    .unwrap();
     let o = run(
         &["curve", "s.toml", "--v0", "0.5:2:4", "--out", "res"],
         dir.path(),
@@ -286,7 +290,8 @@ fn cli_bad_input_is_one_line_and_writes_nothing() {
     }
     // a velocity whose solve fails: named, no files
     let dir = tempfile::tempdir().unwrap();
-    let scene = mdr_impact::scene::DEFAULT_SCENE.replace("name = \"auto\"", "name = \"mdr-euler\"");
+    let scene =
+        mdr_impact::io::scene::DEFAULT_SCENE.replace("name = \"auto\"", "name = \"mdr-euler\"");
     std::fs::write(dir.path().join("euler.toml"), scene).unwrap();
     let o = run(&["curve", "euler.toml", "--v0", "0.5:1:3"], dir.path());
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));

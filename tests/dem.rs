@@ -8,11 +8,11 @@ use std::path::Path;
 
 use common::{run, stderr};
 
-use mdr_impact::curve::{CurveRow, VelocityRange};
-use mdr_impact::dem::{
+use mdr_impact::apps::curve::{CurveRow, VelocityRange};
+use mdr_impact::apps::dem::{
     self, integrate, DemLaw, Format, Geometry, HertzContact, ModulusChoice, DEFAULT_VELOCITIES,
 };
-use mdr_impact::theory::HERTZ_I;
+use mdr_impact::model::hertz::HERTZ_I;
 
 /// First coefficient of the small-dissipation expansion of the viscoelastic CoR,
 /// `e = 1 - C1 c + C2 c^2 + ...` with `c = (3/2) A (k/m)^(2/5) v0^(1/5)`: Schwager and Pöschel,
@@ -51,7 +51,7 @@ fn law_rows(c: &HertzContact, a: f64, spec: &str) -> Vec<CurveRow> {
 fn elastic_hertz_gives_e_one_and_the_hertz_contact_time() {
     let d = integrate(0.5, 0.0).unwrap();
     assert!((d.cor - 1.0).abs() < 1e-9, "{}", d.cor);
-    // theory notes §6 in Hertz units: t_c = 2 I d_max / v0, d_max = (5/4)^(2/5)
+    // docs/theory.md §6 in Hertz units: t_c = 2 I d_max / v0, d_max = (5/4)^(2/5)
     let tc = 2.0 * HERTZ_I * 1.25f64.powf(0.4);
     assert!(
         (d.contact_time / tc - 1.0).abs() < 1e-9,

@@ -3,7 +3,7 @@
 //! or better): every tenth row by default, all 765 rows with
 //! `cargo test --release --test external_reference -- --ignored`.
 
-use mdr_impact::validate::{external_rows, ExternalRow};
+use mdr_impact::report::validate::{external_rows, ExternalRow};
 use mdr_impact::{solve, Groups, Impact, SolveOptions, SolverKind};
 use rayon::prelude::*;
 
@@ -97,7 +97,7 @@ fn fast_solver_all_rows() {
 /// (`rtol e < REF_GLASSY_ABS_FLOOR`) applies (it answered up to 18x outside rtol there before).
 #[test]
 fn glassy_corner_rows() {
-    let rows = mdr_impact::validate::external_glassy_rows().unwrap();
+    let rows = mdr_impact::report::validate::external_glassy_rows().unwrap();
     assert_eq!(rows.len(), 26);
     let table_err = rows.iter().map(|r| r.est_rel_err).fold(0.0, f64::max);
     assert!(table_err <= 1.1e-11, "{table_err:e}");
@@ -108,7 +108,7 @@ fn glassy_corner_rows() {
             SolverKind::Reference,
             rtol,
             rtol + table_err,
-            mdr_impact::theory::REF_GLASSY_ABS_FLOOR / rtol,
+            mdr_impact::solvers::theory::REF_GLASSY_ABS_FLOOR / rtol,
         );
     }
 }

@@ -2,7 +2,7 @@
 //! wide random sweep without NaN. The throwaway timing over the paper's range is `#[ignore]`d:
 //! `cargo test --release --test fast_core -- --ignored --nocapture`.
 
-use mdr_impact::{fast, Error, Groups, Impact, Prony, PronyTerm};
+use mdr_impact::{solvers::fast, Error, Groups, Impact, Prony, PronyTerm};
 
 const K16: f64 = 16.0 / 3.0;
 const HERTZ_TC: f64 = 2.9432751843247047;
@@ -167,7 +167,7 @@ fn layer_probe_rows() {
         ),
     ] {
         let prony = canonical(nu, p2, p3);
-        let reference = mdr_impact::theory::reference::impact(&prony, 1e-11, false)
+        let reference = mdr_impact::solvers::theory::reference::impact(&prony, 1e-11, false)
             .unwrap()
             .cor;
         let cor = fast::impact(&prony, rtol, false).unwrap().cor;
@@ -278,7 +278,11 @@ fn errors_are_reported() {
     bad.terms = vec![ok.terms[0]; fast::FAST_MAX_TERMS + 1];
     assert!(matches!(
         fast::impact(&bad, 1e-6, false),
-        Err(Error::OutOfRange { .. })
+        Err(Error::TooManyTerms {
+            solver: "fast",
+            max: fast::FAST_MAX_TERMS,
+            ..
+        })
     ));
 }
 

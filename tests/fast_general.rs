@@ -1,11 +1,11 @@
-//! `fast` on general linear-viscoelastic materials (theory notes §8): `G_eq` Prony series of 3,
+//! `fast` on general linear-viscoelastic materials (docs/theory.md §8): `G_eq` Prony series of 3,
 //! 10 and 30 terms from a shear series over 20 decades and a viscoelastic bulk, against the
 //! independent reference integrator; identities (split terms, frozen and instant terms); and
 //! random series of up to 40 terms without panic or NaN.
 
-use mdr_impact::material::rheology::{BulkProny, BulkRheology, GeneralMaterial, ShearProny};
-use mdr_impact::theory::reference;
-use mdr_impact::{fast, Error, Prony, PronyTerm};
+use mdr_impact::model::material::rheology::{BulkProny, BulkRheology, GeneralMaterial, ShearProny};
+use mdr_impact::solvers::theory::reference;
+use mdr_impact::{solvers::fast, Error, Prony, PronyTerm};
 use proptest::prelude::*;
 
 /// `G_eq` of a material with `n_shear` shear terms log-spaced over 20 decades

@@ -3,13 +3,13 @@
 //! RK4 in `t` with a bisected Ting root on a Hermite-interpolated history for restitution), and
 //! the slow-relaxation asymptote of the CoR.
 
-use mdr_impact::{fast, Groups, Impact, Prony, PronyTerm};
+use mdr_impact::{solvers::fast, Groups, Impact, Prony, PronyTerm};
 
 const K16: f64 = 16.0 / 3.0;
 
 /// Brute-force CoR, contact time and maximum indentation with `n` steps per phase.
 ///
-/// Compression (theory notes §4), with `σ = sqrt(t)` so that the start `d ≈ t` is regular:
+/// Compression (docs/theory.md §4), with `σ = sqrt(t)` so that the start `d ≈ t` is regular:
 /// `dd/dσ = 2σ v`, `dv/dσ = -2σ F`, `dq_k/dσ = 2σ (-q_k/τ_k + (3/2) sqrt(d) v)`,
 /// `dS_k/dσ = 2σ (-S_k/τ_k + v)`, `F = (16/3)(c_inf d^(3/2) + Σ c_k q_k)`.
 /// Restitution: RK4 in `t` on `(d, v, S_k)`, `F` from the root `t_1` of

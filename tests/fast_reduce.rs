@@ -2,8 +2,8 @@
 //! unreduced solves agree to rtol on every general validation case (the real polymers too) and
 //! on random series, and
 //! the reduced solve's estimate (which includes the reduction's bound) stays within rtol.
-use mdr_impact::catalogue::general_entries;
-use mdr_impact::{fast, Prony, PronyTerm};
+use mdr_impact::report::catalogue::general_entries;
+use mdr_impact::{solvers::fast, Prony, PronyTerm};
 use proptest::prelude::*;
 
 fn check(name: &str, p: &Prony, rtol: f64) -> Result<(usize, f64), TestCaseError> {

@@ -6,8 +6,8 @@
 //! `XROWS` (a CSV `nu,p2,p3,cor,...` to check instead of the external table),
 //! `XCOR_BELOW` (only the rows whose reference CoR is below this value).
 //! `cargo test --release --test fast_xcheck -- --ignored --nocapture`
-use mdr_impact::validate::external_rows;
-use mdr_impact::{fast, Groups, Impact};
+use mdr_impact::report::validate::external_rows;
+use mdr_impact::{solvers::fast, Groups, Impact};
 use std::time::Instant;
 
 struct Row {

@@ -5,7 +5,7 @@
 use std::path::Path;
 use std::process::Command;
 
-use mdr_impact::fit::{self, data, study, Model, ModelKind};
+use mdr_impact::apps::fit::{self, data, study, Model, ModelKind};
 use mdr_impact::{Error, Sphere};
 
 fn sphere() -> Sphere {

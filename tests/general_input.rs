@@ -1,8 +1,8 @@
 //! General materials as scene input: `[material.shear]` and `[material.bulk]` in all their forms,
 //! the standard solid as the one-term case, strict errors, and the dispatch to the solvers.
 
-use mdr_impact::material::{BulkRheology, ShearProny};
-use mdr_impact::scene::Scene;
+use mdr_impact::io::scene::Scene;
+use mdr_impact::model::material::{BulkRheology, ShearProny};
 use mdr_impact::{solve, Error, GeneralMaterial, Impact, SolveOptions, SolverKind, Sphere};
 
 const HEAD: &str = "[sphere]\nmass = 4.11e-3\nradius = 5.0e-3\n[impact]\nvelocity = 0.99\n";
@@ -365,7 +365,7 @@ fn ten_terms_through_auto() {
     assert_eq!(imp.canonical_relaxation().terms.len(), 10);
     let rtol = 1e-6;
     let o = solve(&imp, &opts(SolverKind::Auto, rtol)).unwrap();
-    if imp.canonical_relaxation().terms.len() > mdr_impact::fast::FAST_MAX_TERMS {
+    if imp.canonical_relaxation().terms.len() > mdr_impact::solvers::fast::FAST_MAX_TERMS {
         assert_eq!(o.solver, "reference");
         let why = o.fallback.as_deref().unwrap();
         assert!(why.contains("prony terms"), "{why}");
@@ -407,7 +407,7 @@ proptest::proptest! {
             1 => BulkRheology::Elastic(10f64.powf(bulk_scale)),
             2 => BulkRheology::Poisson(nu),
             _ => BulkRheology::Prony(
-                mdr_impact::material::BulkProny::new(10f64.powf(bulk_scale), &p(&bulk)).unwrap(),
+                mdr_impact::model::material::BulkProny::new(10f64.powf(bulk_scale), &p(&bulk)).unwrap(),
             ),
         };
         let m = GeneralMaterial::new(shear, bulk).unwrap();

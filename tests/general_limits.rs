@@ -4,12 +4,12 @@
 //! incompressible result; splitting every term into two equal halves changes nothing. Each line
 //! holds the relative deviation from its limit (two significant digits) and is also asserted
 //! against a stated bound. Unit sphere at unit speed, relaxed shear modulus 1: canonical units.
-use mdr_impact::material::{BulkRheology, GeneralMaterial, Material, ShearProny};
-use mdr_impact::validate::fmt_err;
+use mdr_impact::model::material::{BulkRheology, GeneralMaterial, Material, ShearProny};
+use mdr_impact::report::validate::fmt_err;
 use mdr_impact::{solve, Impact, Outcome, SolveOptions, SolverKind, Sphere};
 
 const RTOL: f64 = 1e-10;
-/// Hertz contact time over the maximum indentation (theory notes §6).
+/// Hertz contact time over the maximum indentation (docs/theory.md §6).
 const HERTZ_TC: f64 = 2.943_275_184_324_704_7;
 
 fn fast(imp: &Impact) -> Outcome {

@@ -1,7 +1,7 @@
 //! Inputs are answered or refused, never silently bent: the dimensionless groups, the explicit
 //! MDR resolution, output paths and user text quoted in scene messages.
 
-use mdr_impact::scene::{Scene, DEFAULT_SCENE};
+use mdr_impact::io::scene::{Scene, DEFAULT_SCENE};
 use mdr_impact::{solve, Error, Groups, Impact, Resolution, SolveOptions, SolverKind};
 
 fn refused(r: mdr_impact::Result<Groups>, f: &str) {

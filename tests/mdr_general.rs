@@ -4,7 +4,7 @@
 //! integrate. Checked against `fast` at 1e-10; the one-term case against the standard solid;
 //! `mdr-euler` refuses general materials with one line.
 
-use mdr_impact::material::rheology::{BulkProny, BulkRheology, GeneralMaterial, ShearProny};
+use mdr_impact::model::material::rheology::{BulkProny, BulkRheology, GeneralMaterial, ShearProny};
 use mdr_impact::{solve, Error, Impact, Material, Resolution, SolveOptions, SolverKind, Sphere};
 use std::time::Instant;
 
@@ -167,15 +167,17 @@ fn mdr_euler_takes_general_material() {
     assert_eq!(adaptive.solver, "mdr-euler");
     assert!((adaptive.cor - truth).abs() <= 1e-3 * truth);
     // two viscoelastic bodies stay refused, with one line
-    let two = mdr_impact::catalogue::TWO_BODIES[0].impact().unwrap();
+    let two = mdr_impact::report::catalogue::TWO_BODIES[0]
+        .impact()
+        .unwrap();
     let e = solve(&two, &opts(SolverKind::MdrEuler, 1e-3)).unwrap_err();
     assert!(matches!(e, Error::Unsupported(_)));
     assert_eq!(
         e.to_string(),
-        mdr_impact::solver::MDR_EULER_GENERAL_UNSUPPORTED
+        mdr_impact::solvers::MDR_EULER_GENERAL_UNSUPPORTED
     );
     // one shear term with an elastic bulk: the standard solid's Euler network, on one grid
-    use mdr_impact::{mdr, solver::canonical_material};
+    use mdr_impact::{solvers::canonical_material, solvers::mdr};
     let m = mdr_impact::Material::with_poisson(1.0e6, 1.0e7, 500.0, 0.45).unwrap();
     let a = canonical_material(&Impact::new(sphere(), 0.99, m).unwrap()).unwrap();
     let b =

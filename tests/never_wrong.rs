@@ -2,7 +2,7 @@
 //! (checked against the independent `reference` solver, and against `fast` at rtol 1e-12) or a
 //! refusal whose message tells the truth.
 use mdr_impact::{
-    scene::Scene, solve, Error, Groups, Impact, Outcome, Result, SolveOptions, SolverKind,
+    io::scene::Scene, solve, Error, Groups, Impact, Outcome, Result, SolveOptions, SolverKind,
 };
 
 fn groups_solve(nu: f64, p2: f64, p3: f64, solver: SolverKind, rtol: f64) -> Result<Outcome> {

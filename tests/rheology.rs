@@ -1,18 +1,18 @@
-//! General rheology (theory notes §8): validated Prony series in shear and bulk, the equivalent
+//! General rheology (docs/theory.md §8): validated Prony series in shear and bulk, the equivalent
 //! relaxation `G_eq(t)` as an exact Prony series (`material::carson`), and its independent
 //! Talbot inversion (`theory::bromwich`).
 //!
 //! Checks: the series against the Carson formula evaluated directly on `s > 0`, the glassy and
-//! relaxed closed forms, the standard solid's closed form (theory notes §2), the limits
+//! relaxed closed forms, the standard solid's closed form (docs/theory.md §2), the limits
 //! `K -> inf` and split terms, the two routes against each other, bad input, and random series.
 
 use approx::assert_relative_eq;
-use mdr_impact::material::carson;
-use mdr_impact::material::rheology::{
+use mdr_impact::model::material::carson;
+use mdr_impact::model::material::rheology::{
     equivalent_elastic, BulkProny, BulkRheology, GeneralMaterial, ShearProny,
 };
-use mdr_impact::material::{Material, Prony};
-use mdr_impact::theory::bromwich;
+use mdr_impact::model::material::{Material, Prony};
+use mdr_impact::solvers::theory::bromwich;
 use mdr_impact::Error;
 use proptest::prelude::*;
 
@@ -256,7 +256,7 @@ fn talbot_error_against_nodes() {
 }
 
 /// One shear term with an elastic (or incompressible) bulk is the standard solid: the closed
-/// form of theory notes §2 (`Material::equivalent_relaxation`), term by term.
+/// form of docs/theory.md §2 (`Material::equivalent_relaxation`), term by term.
 #[test]
 fn one_term_is_the_standard_solid() {
     for (nu, g1, eta) in [
@@ -556,7 +556,7 @@ fn combined_formula(a: &Prony, b: &Prony, s: f64) -> f64 {
     1.0 / (1.0 / carson_of_series(a, s) + 1.0 / carson_of_series(b, s))
 }
 
-/// Two bodies (theory notes §8): the combined series against the compliance sum on `s > 0`,
+/// Two bodies (docs/theory.md §8): the combined series against the compliance sum on `s > 0`,
 /// identical bodies give `G / 2`, a much stiffer partner gives the softer body back, and the
 /// glassy and relaxed values are the elastic combinations.
 #[test]
@@ -633,7 +633,7 @@ fn time_domain_route_agrees_with_carson_and_talbot() {
     let mut series = Vec::new();
     for (name, m) in catalogue() {
         let carson_route = m.equivalent_relaxation().unwrap();
-        let poles_route = mdr_impact::theory::poles::equivalent_relaxation(&m).unwrap();
+        let poles_route = mdr_impact::solvers::theory::poles::equivalent_relaxation(&m).unwrap();
         let t = times(&m);
         let (lo, hi) = (1e-3 * t[0], 1e3 * t[t.len() - 1]);
         let d = time_domain_difference(&poles_route, &carson_route, lo, hi);
@@ -653,7 +653,7 @@ fn time_domain_route_agrees_with_carson_and_talbot() {
     for (na, lo_a, hi_a, ca, pa) in &series {
         for (nb, lo_b, hi_b, cb, pb) in &series {
             let c = carson::combine(ca, cb).unwrap();
-            let p = mdr_impact::theory::poles::series(pa, pb).unwrap();
+            let p = mdr_impact::solvers::theory::poles::series(pa, pb).unwrap();
             let d = time_domain_difference(&p, &c, lo_a.min(*lo_b), hi_a.max(*hi_b));
             assert!(d < 1e-12, "{na} + {nb}: {d:e}");
         }
@@ -678,7 +678,7 @@ proptest! {
         let shear = ShearProny::new(10f64.powf(g_inf), &shear).unwrap();
         let m = material(shear, random_bulk(kind, 10f64.powf(scale), nu, &bulk));
         let c = m.equivalent_relaxation().unwrap();
-        let p = mdr_impact::theory::poles::equivalent_relaxation(&m).unwrap();
+        let p = mdr_impact::solvers::theory::poles::equivalent_relaxation(&m).unwrap();
         let d = time_domain_difference(&p, &c, 1e-13, 1e13);
         prop_assert!(d < 1e-11, "{d:e}");
         let other = Prony {
@@ -691,7 +691,7 @@ proptest! {
                 .collect(),
         };
         let cc = carson::combine(&c, &other).unwrap();
-        let pp = mdr_impact::theory::poles::series(&p, &other).unwrap();
+        let pp = mdr_impact::solvers::theory::poles::series(&p, &other).unwrap();
         let d = time_domain_difference(&pp, &cc, 1e-13, 1e13);
         prop_assert!(d < 1e-11, "two bodies: {d:e}");
     }

@@ -1,7 +1,7 @@
 //! `Scene::to_toml`: every kind of scene written back as TOML parses to an equal scene (bit for
 //! bit), and the written scene solves to the same CoR.
 
-use mdr_impact::scene::Scene;
+use mdr_impact::io::scene::Scene;
 use mdr_impact::solve;
 
 fn round_trip(scene: &Scene) -> Scene {

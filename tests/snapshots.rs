@@ -4,9 +4,9 @@
 //! f64, so the snapshots are stable; a change in a physical constant or in the work a solver
 //! does shows up as a diff.
 
-use mdr_impact::catalogue::IMPACTS;
-use mdr_impact::mdr::indent::IndentResolution;
-use mdr_impact::validate::*;
+use mdr_impact::report::catalogue::IMPACTS;
+use mdr_impact::report::validate::*;
+use mdr_impact::solvers::mdr::indent::IndentResolution;
 use mdr_impact::{solve, SolveOptions, SolverKind};
 
 macro_rules! snap {

@@ -2,6 +2,7 @@
 //! CoR in (0, 1] or a clear error, never NaN and never a hang (work limits turn into errors).
 //! Property tests for scaling invariance, energy balance and refinement.
 
+use mdr_impact::solvers::mdr;
 use mdr_impact::*;
 use proptest::prelude::*;
 
@@ -128,7 +129,7 @@ proptest! {
     #[test]
     fn refinement_reduces_error(nu in -0.9f64..0.5, lp2 in -3.0f64..0.0, lp3 in -1.0f64..1.0) {
         let imp = Impact::from_groups(Groups::new(nu, 10f64.powf(lp2), 10f64.powf(lp3)).unwrap()).unwrap();
-        let mat = solver::canonical_material(&imp).unwrap();
+        let mat = solvers::canonical_material(&imp).unwrap();
         let layout = mdr::pilot(&mat.prony).unwrap();
         let run = |n, m| mdr::run_resolution(mdr::Scheme::Exponential, &mat, &layout, n, m, false).unwrap().cor;
         let exact = solve(&imp, &SolveOptions { solver: SolverKind::Reference, rtol: 1e-10, ..Default::default() }).unwrap().cor;

@@ -1,11 +1,11 @@
-//! The stress test of the accuracy contract (`mdr_impact::stress`): random groups over the whole
+//! The stress test of the accuracy contract (`mdr_impact::report::stress`): random groups over the whole
 //! input range, `auto` and `fast` at every rtol from 1e-2 to 1e-11, against the reference.
 //! Every answer within rtol or refused; never a panic, never NaN.
 //!
 //! Slow (about two minutes on 2 cores in release):
 //! `cargo test --release --test stress -- --ignored`.
 
-use mdr_impact::stress;
+use mdr_impact::report::stress;
 
 #[test]
 #[ignore = "slow: 2000 rows x 20 solves plus the reference truth, about two minutes in release; \

@@ -3,9 +3,9 @@
 
 use std::path::Path;
 
-use mdr_impact::figures::contour::{isolines, Field};
-use mdr_impact::figures::{self, stats, FigureArgs};
-use mdr_impact::sweep::{self, LogRange, Plan, Sampling, SweepOptions, COLUMNS};
+use mdr_impact::apps::sweep::{self, LogRange, Plan, Sampling, SweepOptions, COLUMNS};
+use mdr_impact::report::figures::contour::{isolines, Field};
+use mdr_impact::report::figures::{self, stats, FigureArgs};
 use mdr_impact::{Error, SolveOptions, SolverKind};
 
 fn opts(dimensional: Option<u64>) -> SweepOptions {

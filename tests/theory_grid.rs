@@ -3,7 +3,7 @@
 //! Prints the median / max time per impact. The cross-check against the independent tables is
 //! `tests/external_reference.rs` (committed tables, every row asserted).
 
-use mdr_impact::theory::reference::impact;
+use mdr_impact::solvers::theory::reference::impact;
 use mdr_impact::Groups;
 use std::time::Instant;
 

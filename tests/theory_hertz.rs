@@ -1,10 +1,10 @@
-//! Hertz closed forms (theory notes §6) and the exact trajectory.
+//! Hertz closed forms (docs/theory.md §6) and the exact trajectory.
 
 use approx::assert_relative_eq;
-use mdr_impact::indentation::Prescribed;
-use mdr_impact::theory::hertz::HertzImpact;
-use mdr_impact::theory::special::hyp2f1_series;
-use mdr_impact::theory::HERTZ_I;
+use mdr_impact::math::special::hyp2f1_series;
+use mdr_impact::model::hertz::HertzImpact;
+use mdr_impact::model::hertz::HERTZ_I;
+use mdr_impact::solvers::indentation::Prescribed;
 
 /// `2 I = 2.9432751843247047` (mpmath, 30 digits: 2.94327518432470465738178730008).
 #[test]
@@ -101,7 +101,7 @@ fn prescribed_variant() {
 /// scales (`Outcome::to_si`), to 1e-12: the closed forms respect the scaling of Eq. (11).
 #[test]
 fn si_outcome_matches_canonical_scaled() {
-    use mdr_impact::theory::hertz::hertz_outcome;
+    use mdr_impact::model::hertz::hertz_outcome;
     use mdr_impact::{Impact, Material, Sphere};
     let m = Material::with_poisson(3e6, 0.0, 0.0, 0.3).unwrap();
     let imp = Impact::new(Sphere::new(0.012, 0.004).unwrap(), 1.7, m).unwrap();

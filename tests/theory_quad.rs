@@ -1,7 +1,7 @@
 //! The checked quadrature wrapper (style notes, habit 8).
 
-use mdr_impact::theory::quad::integrate;
-use mdr_impact::theory::special::dawson;
+use mdr_impact::math::quad::integrate;
+use mdr_impact::math::special::dawson;
 use mdr_impact::Error;
 
 /// Known integrals to 1e-13; reversed limits flip the sign; a == b gives 0 with no evaluations.

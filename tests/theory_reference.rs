@@ -2,10 +2,10 @@
 //! in rtol, agreement with the prescribed-history theory on its own trajectory, slow-relaxation
 //! asymptote, input errors.
 
-use mdr_impact::material::Prony;
-use mdr_impact::theory::hertz::HertzImpact;
-use mdr_impact::theory::reference::impact;
-use mdr_impact::theory::viscoelastic::{response, OneMaximum};
+use mdr_impact::model::hertz::HertzImpact;
+use mdr_impact::model::material::Prony;
+use mdr_impact::solvers::theory::reference::impact;
+use mdr_impact::solvers::theory::viscoelastic::{response, OneMaximum};
 use mdr_impact::{Error, Groups, History};
 
 fn canonical(nu: f64, p2: f64, p3: f64) -> Prony {
@@ -228,7 +228,7 @@ fn max_force_is_refined() {
 /// flight with velocity -e and no force, and no sample exceeds the maximum force.
 #[test]
 fn sampled_history() {
-    use mdr_impact::theory::reference::impact_sampled;
+    use mdr_impact::solvers::theory::reference::impact_sampled;
     let pr = canonical(0.3, 1.0, 0.0);
     let o = impact_sampled(&pr, 1e-11, 41).unwrap();
     let hz = HertzImpact::canonical(4.0 * pr.relaxed).unwrap();
@@ -271,7 +271,7 @@ fn sampled_history() {
 /// bad time lists refused.
 #[test]
 fn history_at_given_times() {
-    use mdr_impact::theory::reference::{impact_at, impact_sampled};
+    use mdr_impact::solvers::theory::reference::{impact_at, impact_sampled};
     let pr = canonical(0.3, 0.1, 1.0);
     let uniform = impact_sampled(&pr, 1e-10, 33).unwrap();
     let hu = uniform.history.unwrap();

@@ -3,7 +3,7 @@
 //! Regenerate with `cargo test --test theory_reference_files -- --ignored` (or, once wired,
 //! `mdr-impact reference --out reference`).
 
-use mdr_impact::theory::generate_reference;
+use mdr_impact::solvers::theory::generate_reference;
 use std::path::{Path, PathBuf};
 
 /// Relative tolerance per column (scaled by the column's largest magnitude): the generators are

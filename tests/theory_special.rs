@@ -3,7 +3,7 @@
 #![allow(clippy::excessive_precision)]
 
 use approx::assert_relative_eq;
-use mdr_impact::theory::special::{dawson, x_minus_dawson};
+use mdr_impact::math::special::{dawson, x_minus_dawson};
 
 const MPMATH: &[(f64, f64)] = &[
     (1e-3, 0.000_999_999_333_333_600_020_7),

@@ -1,9 +1,9 @@
 //! Lee–Radok/Ting for prescribed histories: quadrature path against the independent closed form
 //! (Dawson) for the triangle; elastic limits; Hertz trajectory.
 
-use mdr_impact::indentation::Prescribed;
-use mdr_impact::material::{Prony, PronyTerm};
-use mdr_impact::theory::viscoelastic::{response, separation_time, triangle_closed_form};
+use mdr_impact::model::material::{Prony, PronyTerm};
+use mdr_impact::solvers::indentation::Prescribed;
+use mdr_impact::solvers::theory::viscoelastic::{response, separation_time, triangle_closed_form};
 use mdr_impact::{Groups, Material};
 
 fn cases() -> Vec<(&'static str, Prony)> {

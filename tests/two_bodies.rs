@@ -1,4 +1,4 @@
-//! Two-body collisions (theory notes §8) as an insta snapshot (`snapshots/two_bodies.snap`) and
+//! Two-body collisions (docs/theory.md §8) as an insta snapshot (`snapshots/two_bodies.snap`) and
 //! tests. The checks, each a relative deviation (two significant digits) also asserted against
 //! a stated bound:
 //! - body B rigid (a rigid sphere of infinite mass and radius, i.e. a rigid wall) is today's
@@ -11,9 +11,9 @@
 //!   `reference` on the combined `G_tot`.
 use std::process::Command;
 
-use mdr_impact::material::{BulkProny, BulkRheology, GeneralMaterial, Material, ShearProny};
-use mdr_impact::scene::Scene;
-use mdr_impact::validate::fmt_err;
+use mdr_impact::io::scene::Scene;
+use mdr_impact::model::material::{BulkProny, BulkRheology, GeneralMaterial, Material, ShearProny};
+use mdr_impact::report::validate::fmt_err;
 use mdr_impact::{
     solve, Body, BodyMaterial, Error, Impact, Outcome, Side, SolveOptions, SolverKind, Sphere,
     TwoBodies,
@@ -446,7 +446,7 @@ fn run_json_reports_both_bodies() {
 /// (rtol 1e-4) agree with `reference` (rtol 1e-10) within their tolerances.
 #[test]
 fn catalogue_collisions_agree() {
-    for case in mdr_impact::catalogue::TWO_BODIES {
+    for case in mdr_impact::report::catalogue::TWO_BODIES {
         let imp = case.impact().unwrap();
         let truth = run(&imp, SolverKind::Reference, 1e-10).cor;
         for (solver, rtol) in [

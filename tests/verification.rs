@@ -1,10 +1,10 @@
 //! Verification against the independent theory: convergence orders of the MDR schemes, the Hertz
 //! and incompressible limits and the first-order asymptotes (the numbers VALIDATION.md reports).
 
-use mdr_impact::catalogue::impact_case;
-use mdr_impact::indentation::Prescribed;
-use mdr_impact::mdr::Scheme;
-use mdr_impact::validate::*;
+use mdr_impact::report::catalogue::impact_case;
+use mdr_impact::report::validate::*;
+use mdr_impact::solvers::indentation::Prescribed;
+use mdr_impact::solvers::mdr::Scheme;
 
 fn assert_orders(name: &str, errors: &[f64], expected: f64, skip: usize) {
     let orders = observed_orders(errors);
@@ -58,12 +58,12 @@ fn prescribed_mdr_converges_to_theory_at_second_order() {
 /// edge and the element sum tends to first order, so there the order lies between 1 and 2.
 #[test]
 fn prescribed_orders_on_catalogue() {
-    for case in mdr_impact::catalogue::IMPACTS {
+    for case in mdr_impact::report::catalogue::IMPACTS {
         for (name, h) in prescribed_histories().unwrap() {
             let s = prescribed_refinement(case, &h, 6).unwrap();
             let e: Vec<f64> = s.iter().map(|x| x.2).collect();
             let p = (e[3] / e[5]).log2() / 2.0;
-            let ok = if case.regime == mdr_impact::catalogue::Regime::Stiff {
+            let ok = if case.regime == mdr_impact::report::catalogue::Regime::Stiff {
                 (0.7..=2.3).contains(&p)
             } else {
                 (p - 2.0).abs() <= 0.3
@@ -76,13 +76,13 @@ fn prescribed_orders_on_catalogue() {
 /// On every catalogue material and both histories, MDR and theory agree force for force.
 #[test]
 fn prescribed_agreement_on_catalogue() {
-    for case in mdr_impact::catalogue::IMPACTS {
+    for case in mdr_impact::report::catalogue::IMPACTS {
         for (name, h) in prescribed_histories().unwrap() {
             let c = prescribed_comparison(
                 case,
                 name,
                 &h,
-                mdr_impact::mdr::indent::IndentResolution {
+                mdr_impact::solvers::mdr::indent::IndentResolution {
                     elements: 400,
                     steps: 800,
                 },

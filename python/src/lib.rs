@@ -1,7 +1,7 @@
 //! `mdr_impact._core`: the Python binding of the `mdr-impact` library (PyO3, rust-numpy).
 //!
 //! This layer only converts types: every number comes from the library ([`mdr_impact::solve`],
-//! [`mdr_impact::batch::solve_groups`], [`mdr_impact::curve::run_velocities`], the scene
+//! [`mdr_impact::apps::batch::solve_groups`], [`mdr_impact::apps::curve::run_velocities`], the scene
 //! parser), every error is the library's [`mdr_impact::Error`] with the message the command line
 //! prints (after `error: `), raised as `mdr_impact.Error`, a subclass of `ValueError`. Solves run
 //! with the GIL released, many at once in parallel (rayon). The public Python API, with its
@@ -14,14 +14,15 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
-use mdr_impact::bodies::Side;
 use mdr_impact::error::escape_text;
-use mdr_impact::material::{BulkProny, BulkRheology, ShearProny};
-use mdr_impact::scene::Scene as RsScene;
+use mdr_impact::io::scene::Scene as RsScene;
+use mdr_impact::model::bodies::Side;
+use mdr_impact::model::material::{BulkProny, BulkRheology, ShearProny};
 use mdr_impact::{
-    batch, catalogue, curve, dem, output, tolerances, Body as RsBody, BodyMaterial, Bulk,
-    GeneralMaterial as RsGeneral, Groups, History, Impact, ImpactMaterial, Material as RsMaterial,
-    Outcome, Resolution, SolveOptions, SolverKind, Sphere as RsSphere, TwoBodies,
+    apps::batch, apps::curve, apps::dem, io::output, model::tolerances, report::catalogue,
+    Body as RsBody, BodyMaterial, Bulk, GeneralMaterial as RsGeneral, Groups, History, Impact,
+    ImpactMaterial, Material as RsMaterial, Outcome, Resolution, SolveOptions, SolverKind,
+    Sphere as RsSphere, TwoBodies,
 };
 
 pyo3::create_exception!(
@@ -168,7 +169,7 @@ fn cor_groups<'py>(
     PyTuple::new(py, [cor, time, depth])
 }
 
-/// The catalogue of validation cases (`src/catalogue.rs`): a list of dicts with the keys `id`,
+/// The catalogue of validation cases (`src/report/catalogue.rs`): a list of dicts with the keys `id`,
 /// `regime`, `nu`, `p2`, `p3`.
 #[pyfunction]
 fn catalogue_impacts(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
@@ -343,7 +344,7 @@ impl Material {
     fn is_elastic(&self) -> bool {
         self.inner.is_elastic()
     }
-    /// The equivalent incompressible relaxation function `G_eq(t)` (theory notes §2) as a
+    /// The equivalent incompressible relaxation function `G_eq(t)` (docs/theory.md §2) as a
     /// `Prony` (Pa, s).
     fn equivalent_relaxation(&self) -> Prony {
         Prony::of(&self.inner.equivalent_relaxation())
@@ -368,7 +369,7 @@ impl Material {
     }
 }
 
-/// A general linear-viscoelastic solid (theory notes §8): the shear series `shear` (a `Prony`
+/// A general linear-viscoelastic solid (docs/theory.md §8): the shear series `shear` (a `Prony`
 /// with `relaxed = g_inf`, terms `(g_i, tau_i)`) and exactly one bulk: `bulk` (a `Prony`,
 /// `relaxed = k_inf`, terms `(k_j, theta_j)`), `k_0` (Pa), `poisson` or `incompressible=True`.
 #[pyclass(frozen, eq, module = "mdr_impact")]
@@ -447,7 +448,7 @@ impl GeneralMaterial {
     fn k_0(&self) -> f64 {
         self.inner.bulk_relaxed()
     }
-    /// `G_eq(t)` (theory notes §8) as an exact `Prony` series (Pa, s).
+    /// `G_eq(t)` (docs/theory.md §8) as an exact `Prony` series (Pa, s).
     fn equivalent_relaxation(&self) -> PyResult<Prony> {
         Ok(Prony::of(&ok(self.inner.equivalent_relaxation())?))
     }
@@ -1065,7 +1066,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("MIN_RTOL", tolerances::MIN_RTOL)?;
     m.add("MAX_RTOL", tolerances::MAX_RTOL)?;
     m.add("SOLVERS", SolverKind::NAMES.to_vec())?;
-    m.add("DEFAULT_SCENE", mdr_impact::scene::DEFAULT_SCENE)?;
+    m.add("DEFAULT_SCENE", mdr_impact::io::scene::DEFAULT_SCENE)?;
     m.add_function(wrap_pyfunction!(cor_groups, m)?)?;
     m.add_function(wrap_pyfunction!(curve_values, m)?)?;
     m.add_function(wrap_pyfunction!(catalogue_impacts, m)?)?;

@@ -1,0 +1,1154 @@
+//! Material parameters from drop tests (`mdr-impact fit`): weighted nonlinear least squares of
+//! measured coefficients of restitution (and contact times) against the impact solver.
+//!
+//! # Method
+//! - Residuals: `(e_model - e) / sd_e` per drop and `(t_model - t_c) / sd_t` per measured contact
+//!   time; without a `cor_sd` column `sd_e = 1` (absolute CoR residuals), without
+//!   `contact_time_sd` `sd_t = t_c` (relative contact-time residuals). Forward model: [`solve`]
+//!   with `auto` at [`FIT_RTOL`] (1e-8, far below any drop test's
+//!   noise).
+//! - Coordinates: `ln` of every modulus and viscosity (positivity) and the logistic coordinate
+//!   of `nu` in `(-1, 0.5)` ([`model::ParamKind`]); fixed parameters (`--fix`) are left out.
+//! - Multi-start: a grid over the physically sensible box (`p2 = g_inf / g_1` from 1e-4 to 1,
+//!   `p3` at the data's mean velocity from 0.03 to 300, `nu` from -0.5 to 0.49, and with contact times
+//!   `g_inf` from 1e-3 to 1 times the Hertz modulus of the measured contact times) is screened at
+//!   a loose rtol; Levenberg–Marquardt (the `levenberg-marquardt` crate, MINPACK's algorithm, with
+//!   central-difference Jacobians) runs from the best [`FIT_LM_STARTS`] of them and from the best
+//!   one of every `nu` level (the misfit can have several basins along `nu`), and the smallest
+//!   misfit wins.
+//! - CoR alone depends on the material only through the groups of paper Eq. (11): `nu`,
+//!   `p2 = g_inf / g_1` and `p3 = eta (v0 R / (m^2 g_inf^3))^(1/5)`, i.e. `eta / g_inf^(3/5)`
+//!   for given spheres and velocities. Scaling `(g_inf, g_1, eta)` by `(s, s, s^(3/5))` leaves
+//!   every CoR unchanged, so without contact times (and with none of `g_inf`, `g_1`, `eta`
+//!   fixed) `g_inf` is held at an arbitrary reference and only `g_1`, `eta` and `nu` move: the
+//!   fit then runs in coordinates equivalent to the identifiable ones.
+//!
+//! # Uncertainty and identifiability
+//! At the estimate, the weighted Jacobian `J` over every parameter that is not fixed (`g_inf`
+//! included even when it was held) is decomposed, `J = U S V^T`. Singular values at or below
+//! [`FIT_NULL_RATIO`] times the largest span the *null space*: directions the data do not
+//! determine. A parameter or group (a linear combination `a` of the coordinates) is
+//! **identifiable** when
+//! 1. its direction has no component above [`FIT_NULL_COMPONENT`] in the null space (else its
+//!    value is not reported: `null`),
+//! 2. the noise scale is known (every `*_sd` given) or there are residual degrees of freedom to
+//!    estimate it (`s^2 = SSR / (n - rank)`), and
+//! 3. its 95 % interval is bounded: the Wald interval when it reaches at most
+//!    [`FIT_MAX_HALF_WIDTH`] (a factor of 10 for a modulus) from the estimate in its coordinate;
+//!    otherwise, for a parameter, the profile-likelihood interval, which must close on both
+//!    sides within [`FIT_PROFILE_STEPS`] steps of [`FIT_PROFILE_STEP`] (four decades; else the
+//!    value is reported with `identifiable: false` and no interval). A group whose Wald interval
+//!    is too wide is reported `identifiable: false` with that interval (groups are not
+//!    profiled).
+//!
+//! The Wald interval is `a x ± q sqrt(s^2 a^T V S^-2 V^T a)` (range of `V` only), mapped back
+//! to the parameter (`exp`, logistic), with `q` the normal quantile when the noise is known and
+//! Student's `t` with `n - rank` degrees of freedom otherwise. The profile interval is where the
+//! misfit, re-minimised over the other parameters, rises by `q^2 s^2` above its minimum. When
+//! another start of the multi-start ends in a different minimum whose misfit is within that
+//! same threshold of the best, every interval is widened to contain it (the data do not exclude
+//! it; the note says so). The same holds for the minima found with `nu` held at the grid levels
+//! of the multi-start: any point within the threshold lies inside every profile interval.
+//!
+//! [`solve`]: crate::solve
+//! [`FIT_LM_STARTS`]: crate::model::tolerances::FIT_LM_STARTS
+//! [`FIT_NULL_RATIO`]: crate::model::tolerances::FIT_NULL_RATIO
+//! [`FIT_NULL_COMPONENT`]: crate::model::tolerances::FIT_NULL_COMPONENT
+//! [`FIT_MAX_HALF_WIDTH`]: crate::model::tolerances::FIT_MAX_HALF_WIDTH
+//! [`FIT_PROFILE_STEP`]: crate::model::tolerances::FIT_PROFILE_STEP
+//! [`FIT_PROFILE_STEPS`]: crate::model::tolerances::FIT_PROFILE_STEPS
+
+pub mod data;
+pub mod model;
+pub mod report;
+pub mod study;
+
+use std::cell::{Cell, RefCell};
+
+use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt, TerminationReason};
+use nalgebra_lm::{storage::Owned, DMatrix as LmMatrix, DVector as LmVector, Dyn};
+
+use crate::error::{Error, Result};
+use crate::model::impact::{Impact, Sphere};
+use crate::model::tolerances::{
+    FIT_FD_STEP, FIT_LM_PATIENCE, FIT_LM_STARTS, FIT_LM_TOL, FIT_MAX_HALF_WIDTH,
+    FIT_NULL_COMPONENT, FIT_NULL_RATIO, FIT_PROFILE_STEP, FIT_PROFILE_STEPS, FIT_RTOL,
+    FIT_SCREEN_RTOL,
+};
+use crate::solvers::{solve, SolveOptions, SolverKind};
+pub use data::{Data, Observation, Setup};
+pub use model::{Model, ModelKind, ParamKind};
+
+/// The modulus (Pa) at which `g_inf` is held when the data (CoR only) cannot determine it; any
+/// value gives the same CoRs, and it is never reported as an estimate.
+pub const COR_ONLY_REFERENCE_MODULUS: f64 = 1.0e6;
+
+/// A `--fix name=value`: the parameter's name (a JSON parameter key, or `k_0`) and its value (SI).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Fix {
+    /// Parameter name.
+    pub name: String,
+    /// Value (Pa, Pa s, or 1 for `nu`).
+    pub value: f64,
+}
+
+impl std::str::FromStr for Fix {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self> {
+        let bad = || {
+            Error::Unsupported(format!(
+                "--fix '{}': expected name=value (SI), e.g. nu=0.45",
+                crate::error::escape_text(s)
+            ))
+        };
+        let (name, value) = s.split_once('=').ok_or_else(bad)?;
+        let value: f64 = value.trim().parse().map_err(|_| bad())?;
+        Ok(Fix {
+            name: name.trim().to_string(),
+            value,
+        })
+    }
+}
+
+/// The model with the fixes applied: `k_0` becomes the bulk, the rest fixed parameter values.
+pub fn setup_model(
+    kind: ModelKind,
+    fixes: &[Fix],
+    taus: Vec<f64>,
+) -> Result<(Model, Vec<Option<f64>>)> {
+    let k_0 = fixes.iter().find(|f| f.name == "k_0").map(|f| f.value);
+    let model = Model::new(kind, k_0, taus)?;
+    let mut fixed = vec![None; model.params.len()];
+    for f in fixes.iter().filter(|f| f.name != "k_0") {
+        let i = model.index(&f.name).ok_or_else(|| {
+            Error::Unsupported(format!(
+                "--fix {}: unknown parameter{}; expected one of {}",
+                crate::error::escape_text(&f.name),
+                if f.name == "nu" {
+                    " (k_0 is fixed)"
+                } else {
+                    ""
+                },
+                model.names()
+            ))
+        })?;
+        if fixed[i].is_some() {
+            return Err(Error::Unsupported(format!("--fix {} given twice", f.name)));
+        }
+        fixed[i] = Some(model.check_value(i, f.value)?);
+    }
+    Ok((model, fixed))
+}
+
+/// The estimate of one parameter or group.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Estimate {
+    /// Name (the JSON key).
+    pub name: String,
+    /// SI unit.
+    pub unit: &'static str,
+    /// The estimate; `None` when the data do not determine it.
+    pub value: Option<f64>,
+    /// The 95 % interval; `None` when there is none.
+    pub ci95: Option<(f64, f64)>,
+    /// Standard error in the fit coordinate (`ln x` for moduli and groups, logistic for `nu`).
+    pub se: Option<f64>,
+    /// Whether the data determine it (see the module docs for the rule).
+    pub identifiable: bool,
+    /// Whether it was fixed by `--fix`.
+    pub fixed: bool,
+    /// Why it is not identifiable (empty when it is).
+    pub note: String,
+}
+
+/// One residual of the fit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Residual {
+    /// Index of the drop in [`Data::observations`].
+    pub observation: usize,
+    /// `"cor"` or `"contact_time"`.
+    pub quantity: &'static str,
+    /// Measured value.
+    pub measured: f64,
+    /// Fitted model value.
+    pub model: f64,
+    /// Weighted residual `(model - measured) / sd`.
+    pub weighted: f64,
+}
+
+/// The result of a fit.
+#[derive(Debug, Clone)]
+pub struct FitResult {
+    /// The model.
+    pub model: Model,
+    /// The data.
+    pub data: Data,
+    /// The parameter values at the estimate (a held `g_inf` included; see [`Estimate::value`]
+    /// for what is reported).
+    pub values: Vec<f64>,
+    /// Fixed values (`None`: fitted).
+    pub fixed: Vec<Option<f64>>,
+    /// Parameter estimates, in model order.
+    pub parameters: Vec<Estimate>,
+    /// The CoR-determined groups `p2` and `eta_over_g_inf_3_5`.
+    pub groups: Vec<Estimate>,
+    /// The residuals.
+    pub residuals: Vec<Residual>,
+    /// `sqrt(SSR / n)` of the weighted residuals.
+    pub rms_residual: f64,
+    /// Residual degrees of freedom `n - rank`.
+    pub dof: usize,
+    /// The noise scale `s` (1 when every standard deviation is given).
+    pub noise_scale: Option<f64>,
+    /// The quantile `q` of the 95 % intervals.
+    pub quantile: Option<f64>,
+    /// Singular values of the weighted Jacobian, largest first.
+    pub singular_values: Vec<f64>,
+    /// Covariance of the parameter coordinates (pseudo-inverse on the identified subspace,
+    /// scaled by `s^2`; zero rows for fixed parameters), when an interval exists.
+    pub covariance: Option<Vec<Vec<f64>>>,
+    /// Forward solves done.
+    pub solves: usize,
+    /// One-line identifiability verdict.
+    pub verdict: String,
+}
+
+/// The weighted problem: model, data, which coordinates move.
+struct Ctx<'a> {
+    model: &'a Model,
+    data: &'a Data,
+    solves: Cell<usize>,
+    /// `p3 / (eta / g_inf^(3/5))` at the data's mean velocity and first sphere.
+    p3_scale: f64,
+    /// Fixed values (never clamped).
+    fixed: Vec<Option<f64>>,
+}
+
+impl<'a> Ctx<'a> {
+    fn new(model: &'a Model, data: &'a Data, fixed: &[Option<f64>]) -> Self {
+        Ctx {
+            model,
+            data,
+            solves: Cell::new(0),
+            p3_scale: p3_scale(data),
+            fixed: fixed.to_vec(),
+        }
+    }
+
+    /// Model CoR and contact time of every drop.
+    fn forward(&self, values: &[f64], rtol: f64) -> Result<Vec<(f64, f64)>> {
+        let opts = SolveOptions {
+            solver: SolverKind::Auto,
+            rtol,
+            ..Default::default()
+        };
+        let mut base: Vec<Option<Impact>> = vec![None; self.data.setups.len()];
+        self.data
+            .observations
+            .iter()
+            .map(|o| {
+                let imp = match &base[o.setup] {
+                    Some(b) => b.at_velocity(o.v0)?,
+                    None => {
+                        let b =
+                            self.model
+                                .impact(self.data.setups[o.setup].sphere, o.v0, values)?;
+                        base[o.setup] = Some(b.clone());
+                        b
+                    }
+                };
+                self.solves.set(self.solves.get() + 1);
+                let out = solve(&imp, &opts)?;
+                Ok((out.cor, out.contact_time))
+            })
+            .collect()
+    }
+
+    fn residuals(&self, values: &[f64], rtol: f64) -> Result<Vec<f64>> {
+        Ok(self
+            .residual_list(values, rtol)?
+            .into_iter()
+            .map(|r| r.weighted)
+            .collect())
+    }
+
+    fn residual_list(&self, values: &[f64], rtol: f64) -> Result<Vec<Residual>> {
+        let f = self.forward(values, rtol)?;
+        let mut out = Vec::with_capacity(self.data.residual_count());
+        for (i, (o, (e, t))) in self.data.observations.iter().zip(f).enumerate() {
+            out.push(Residual {
+                observation: i,
+                quantity: "cor",
+                measured: o.cor,
+                model: e,
+                weighted: (e - o.cor) / o.cor_sd.unwrap_or(1.0),
+            });
+            if let Some(tc) = o.contact_time {
+                out.push(Residual {
+                    observation: i,
+                    quantity: "contact_time",
+                    measured: tc,
+                    model: t,
+                    weighted: (t - tc) / o.contact_time_sd.unwrap_or(tc),
+                });
+            }
+        }
+        Ok(out)
+    }
+
+    /// Levenberg–Marquardt from `coords` over the coordinates `moving` (the others held):
+    /// the misfit (SSR) and parameter values at the end.
+    fn minimise(&self, coords: Vec<f64>, moving: &[usize]) -> Result<(f64, Vec<f64>)> {
+        if moving.is_empty() {
+            let values = self.values(&coords);
+            return Ok((ssr(&self.residuals(&values, FIT_RTOL)?), values));
+        }
+        let lm = LevenbergMarquardt::new()
+            .with_ftol(FIT_LM_TOL)
+            .with_xtol(FIT_LM_TOL)
+            .with_gtol(FIT_LM_TOL)
+            .with_patience(FIT_LM_PATIENCE);
+        let problem = LmProblem {
+            ctx: self,
+            coords,
+            moving: moving.to_vec(),
+            failure: RefCell::new(None),
+        };
+        let (p, report) = lm.minimize(problem);
+        let values = self.values(&p.coords);
+        if let Some(e) = p.failure.into_inner() {
+            if !report.termination.was_successful() {
+                return Err(e);
+            }
+        }
+        if matches!(
+            report.termination,
+            TerminationReason::NoResiduals | TerminationReason::WrongDimensions(_)
+        ) {
+            return Err(Error::Unsupported(format!(
+                "fit: Levenberg-Marquardt stopped: {:?}",
+                report.termination
+            )));
+        }
+        let s = ssr(&self.residuals(&values, FIT_RTOL)?);
+        if !s.is_finite() {
+            return Err(Error::NonFinite {
+                what: "fit misfit",
+                value: s,
+            });
+        }
+        Ok((s, values))
+    }
+
+    /// The profile-likelihood interval of coordinate `i` (moving in `moving`) at the level
+    /// `best_ssr + threshold`: steps of [`FIT_PROFILE_STEP`] away from the estimate `coords` on
+    /// each side, the other coordinates re-minimised at each step, up to [`FIT_PROFILE_STEPS`]
+    /// steps; the crossing is interpolated linearly. `None` for a side that does not cross
+    /// within the reach (or where a solve fails).
+    fn profile(
+        &self,
+        coords: &[f64],
+        best_ssr: f64,
+        i: usize,
+        moving: &[usize],
+        threshold: f64,
+    ) -> (Option<f64>, Option<f64>) {
+        let rest: Vec<usize> = moving.iter().copied().filter(|&k| k != i).collect();
+        let side = |sign: f64| {
+            let mut c = coords.to_vec();
+            let (mut prev_off, mut prev_ssr) = (0.0, best_ssr);
+            for k in 1..=FIT_PROFILE_STEPS {
+                let off = sign * k as f64 * FIT_PROFILE_STEP;
+                c[i] = coords[i] + off;
+                let Ok((s, values)) = self.minimise(c.clone(), &rest) else {
+                    return None;
+                };
+                if s - best_ssr >= threshold {
+                    let f = (best_ssr + threshold - prev_ssr) / (s - prev_ssr);
+                    return Some(coords[i] + prev_off + f.clamp(0.0, 1.0) * (off - prev_off));
+                }
+                c = self.coords(&values);
+                (prev_off, prev_ssr) = (off, s.max(prev_ssr));
+            }
+            None
+        };
+        (side(-1.0), side(1.0))
+    }
+
+    /// The parameter values of `coords`, clamped into the model's box ([`Model::clamp`]).
+    fn values(&self, coords: &[f64]) -> Vec<f64> {
+        let v: Vec<f64> = self
+            .model
+            .params
+            .iter()
+            .zip(coords)
+            .map(|(p, c)| p.kind.from_coord(*c))
+            .collect();
+        let mut v = self.model.clamp(&v, self.p3_scale);
+        for (x, f) in v.iter_mut().zip(&self.fixed) {
+            if let Some(f) = f {
+                *x = *f;
+            }
+        }
+        v
+    }
+
+    fn coords(&self, values: &[f64]) -> Vec<f64> {
+        self.model
+            .params
+            .iter()
+            .zip(values)
+            .map(|(p, v)| p.kind.to_coord(*v))
+            .collect()
+    }
+
+    /// Central-difference Jacobian of the weighted residuals with respect to the coordinates
+    /// `moving` at `coords`.
+    fn jacobian(&self, coords: &[f64], moving: &[usize]) -> Result<Vec<Vec<f64>>> {
+        let mut cols = Vec::with_capacity(moving.len());
+        for &j in moving {
+            let mut c = coords.to_vec();
+            c[j] = coords[j] + FIT_FD_STEP;
+            let plus = self.residuals(&self.values(&c), FIT_RTOL)?;
+            c[j] = coords[j] - FIT_FD_STEP;
+            let minus = self.residuals(&self.values(&c), FIT_RTOL)?;
+            cols.push(
+                plus.iter()
+                    .zip(&minus)
+                    .map(|(p, m)| (p - m) / (2.0 * FIT_FD_STEP))
+                    .collect(),
+            );
+        }
+        Ok(cols)
+    }
+}
+
+/// The least-squares problem handed to the `levenberg-marquardt` crate (its nalgebra 0.34
+/// vectors stay inside this type).
+struct LmProblem<'a, 'b> {
+    ctx: &'b Ctx<'a>,
+    coords: Vec<f64>,
+    moving: Vec<usize>,
+    failure: RefCell<Option<Error>>,
+}
+
+impl LmProblem<'_, '_> {
+    fn note<T>(&self, r: Result<T>) -> Option<T> {
+        r.map_err(|e| *self.failure.borrow_mut() = Some(e)).ok()
+    }
+}
+
+impl LeastSquaresProblem<f64, Dyn, Dyn> for LmProblem<'_, '_> {
+    type ResidualStorage = Owned<f64, Dyn>;
+    type JacobianStorage = Owned<f64, Dyn, Dyn>;
+    type ParameterStorage = Owned<f64, Dyn>;
+
+    fn set_params(&mut self, x: &LmVector<f64>) {
+        for (k, &j) in self.moving.iter().enumerate() {
+            self.coords[j] = x[k];
+        }
+    }
+    fn params(&self) -> LmVector<f64> {
+        LmVector::from_iterator(
+            self.moving.len(),
+            self.moving.iter().map(|&j| self.coords[j]),
+        )
+    }
+    fn residuals(&self) -> Option<LmVector<f64>> {
+        let r = self.note(self.ctx.residuals(&self.ctx.values(&self.coords), FIT_RTOL))?;
+        Some(LmVector::from_vec(r))
+    }
+    fn jacobian(&self) -> Option<LmMatrix<f64>> {
+        let cols = self.note(self.ctx.jacobian(&self.coords, &self.moving))?;
+        let m = cols.first().map_or(0, Vec::len);
+        Some(LmMatrix::from_fn(m, cols.len(), |i, j| cols[j][i]))
+    }
+}
+
+fn ssr(r: &[f64]) -> f64 {
+    r.iter().map(|x| x * x).sum()
+}
+
+/// The Hertz shear modulus (Pa, incompressible) that gives contact time `t_c` (s) at `v0` for
+/// `sphere` (docs/theory.md §6: `t_c = 2.943 d_max / v0`, `d_max = (5 m v0^2 / (4 k))^(2/5)`,
+/// `k = (16/3) G sqrt(R)`).
+pub fn hertz_modulus(sphere: Sphere, v0: f64, t_c: f64) -> f64 {
+    let d_max = t_c * v0 / (2.0 * crate::model::hertz::HERTZ_I);
+    let k = 5.0 * sphere.mass() * v0 * v0 / (4.0 * d_max.powf(2.5));
+    3.0 * k / (16.0 * sphere.radius().sqrt())
+}
+
+/// `p3 / (eta / g_inf^(3/5)) = (v R / m^2)^(1/5)` at the data's mean velocity (geometric) and
+/// the first drop's sphere.
+fn p3_scale(data: &Data) -> f64 {
+    let n = data.observations.len().max(1) as f64;
+    let v_ref = (data.observations.iter().map(|o| o.v0.ln()).sum::<f64>() / n).exp();
+    let sphere = data.setups[data.observations.first().map_or(0, |o| o.setup)].sphere;
+    (v_ref * sphere.radius() / (sphere.mass() * sphere.mass())).powf(0.2)
+}
+
+/// Starting values over the sensible box (see the module docs), with the fixed values kept.
+fn candidates(model: &Model, data: &Data, fixed: &[Option<f64>], hold: bool) -> Vec<Vec<f64>> {
+    let n = data.observations.len() as f64;
+    let v_ref = (data.observations.iter().map(|o| o.v0.ln()).sum::<f64>() / n).exp();
+    let sphere = data.setups[data.observations[0].setup].sphere;
+    let (m, r) = (sphere.mass(), sphere.radius());
+    let hertz: Vec<f64> = data
+        .observations
+        .iter()
+        .filter_map(|o| {
+            o.contact_time
+                .map(|t| hertz_modulus(data.setups[o.setup].sphere, o.v0, t))
+        })
+        .collect();
+    let g_levels: Vec<f64> = if hertz.is_empty() || hold {
+        vec![COR_ONLY_REFERENCE_MODULUS]
+    } else {
+        let g_h = (hertz.iter().map(|g| g.ln()).sum::<f64>() / hertz.len() as f64).exp();
+        [1e-3, 1e-2, 1e-1, 1.0].iter().map(|f| f * g_h).collect()
+    };
+    let p2s = [1e-4, 1e-3, 1e-2, 3e-2, 1e-1, 3e-1, 1.0];
+    let p3s = [0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 300.0];
+    let nus = [-0.5, 0.0, 0.3, 0.45, 0.49];
+    let inu = model.index("nu");
+    let mut out = Vec::new();
+    for &g in &g_levels {
+        for &p2 in &p2s {
+            for &p3 in &p3s {
+                for &nu in &nus {
+                    let mut v = vec![0.0; model.params.len()];
+                    // g_inf from the fixed value, a fixed g_1 (p2), a fixed eta (p3), or the grid
+                    let g_inf = match (fixed[0], fixed.get(1).copied().flatten()) {
+                        (Some(g), _) => g,
+                        (None, Some(g1)) if model.kind == ModelKind::StandardSolid => p2 * g1,
+                        _ => match (model.kind.clone(), fixed.get(2).copied().flatten()) {
+                            (ModelKind::StandardSolid, Some(eta)) => {
+                                ((eta / p3).powi(5) * v_ref * r / (m * m)).cbrt()
+                            }
+                            _ => g,
+                        },
+                    };
+                    v[0] = g_inf;
+                    let eta = p3 * (m * m * g_inf.powi(3) / (v_ref * r)).powf(0.2);
+                    match model.kind {
+                        ModelKind::StandardSolid => {
+                            v[1] = g_inf / p2;
+                            v[2] = eta;
+                        }
+                        ModelKind::Prony { n } => {
+                            // equal moduli summing to g_inf / p2 (the times are fixed: p3 unused)
+                            if p3 != p3s[0] {
+                                continue;
+                            }
+                            for i in 0..n {
+                                v[1 + i] = g_inf / p2 / n as f64;
+                            }
+                        }
+                    }
+                    if let Some(i) = inu {
+                        v[i] = nu;
+                    }
+                    for (x, f) in v.iter_mut().zip(fixed) {
+                        if let Some(f) = f {
+                            *x = *f;
+                        }
+                    }
+                    out.push(v);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Fit `model` to `data` with the parameters `fixed` (`Some(value)`, aligned with
+/// `model.params`) held.
+///
+/// Errors: [`Error::ElasticData`] when every CoR is 1, [`Error::TooFewObservations`] when
+/// there are fewer measured values than moving parameters, [`Error::FitFailed`] when no start
+/// gives a finite misfit; solver errors otherwise.
+pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResult> {
+    let np = model.params.len();
+    if fixed.len() != np {
+        return Err(Error::Unsupported(format!(
+            "fit: {} fixed-value slots for {np} parameters",
+            fixed.len()
+        )));
+    }
+    data.validate()?;
+    for (i, f) in fixed.iter().enumerate() {
+        if let Some(v) = f {
+            model.check_value(i, *v)?;
+        }
+    }
+    data.check_noise()?;
+    if data.observations.iter().all(|o| o.cor == 1.0) {
+        return Err(Error::ElasticData {
+            observations: data.observations.len(),
+        });
+    }
+    let ctx = Ctx::new(model, data, fixed);
+    let free: Vec<usize> = (0..np).filter(|&i| fixed[i].is_none()).collect();
+    // CoR only, with the scale free in g_inf, g_1 and eta: hold g_inf (module docs)
+    // (a fixed k_0 breaks that symmetry: scaling the moduli then changes nu)
+    let hold = model.kind == ModelKind::StandardSolid
+        && model.k_0.is_none()
+        && !data.has_contact_times()
+        && fixed[..3].iter().all(Option::is_none);
+    let moving: Vec<usize> = free
+        .iter()
+        .copied()
+        .filter(|&i| !(hold && i == 0))
+        .collect();
+    let n = data.residual_count();
+    if n < moving.len() {
+        return Err(Error::TooFewObservations {
+            observations: n,
+            parameters: moving.len(),
+        });
+    }
+
+    // screen the starting points at a loose rtol, keep the best few
+    let mut screened: Vec<(f64, Vec<f64>)> = candidates(model, data, fixed, hold)
+        .into_iter()
+        .filter_map(|v| {
+            let r = ctx.residuals(&v, FIT_SCREEN_RTOL).ok()?;
+            let s = ssr(&r);
+            s.is_finite().then_some((s, v))
+        })
+        .collect();
+    screened.sort_by(|a, b| a.0.total_cmp(&b.0));
+    // The misfit can have several basins, mostly along nu. With nu free, the best screened
+    // points of every nu level are first minimised with nu held at the level (the profile of
+    // the misfit along nu at the grid levels), and the full fit starts from the best levels.
+    let mut last_error = String::from("no starting point gave a finite misfit");
+    let mut starts_from: Vec<Vec<f64>> = Vec::new();
+    // every minimum met on the way (with nu held or not): all may widen the intervals
+    let mut probes: Vec<(f64, Vec<f64>)> = Vec::new();
+    match model.index("nu").filter(|i| moving.contains(i)) {
+        Some(inu) => {
+            let held: Vec<usize> = moving.iter().copied().filter(|&k| k != inu).collect();
+            let mut levels: Vec<(f64, Vec<f64>)> = Vec::new();
+            let mut nus: Vec<f64> = screened.iter().map(|(_, v)| v[inu]).collect();
+            nus.sort_by(f64::total_cmp);
+            nus.dedup();
+            for nu in nus {
+                let best_of_level = screened
+                    .iter()
+                    .filter(|(_, v)| v[inu] == nu)
+                    .take(FIT_LM_STARTS)
+                    .filter_map(|(_, v)| match ctx.minimise(ctx.coords(v), &held) {
+                        Ok(m) => Some(m),
+                        Err(e) => {
+                            last_error = e.to_string();
+                            None
+                        }
+                    })
+                    .min_by(|a, b| a.0.total_cmp(&b.0));
+                levels.extend(best_of_level);
+            }
+            levels.sort_by(|a, b| a.0.total_cmp(&b.0));
+            probes.extend(levels.iter().cloned());
+            starts_from.extend(levels.into_iter().take(FIT_LM_STARTS + 1).map(|(_, v)| v));
+        }
+        None => starts_from.extend(screened.iter().take(FIT_LM_STARTS).map(|(_, v)| v.clone())),
+    }
+    let mut minima: Vec<(f64, Vec<f64>)> = Vec::new();
+    let starts = starts_from.len();
+    for v in starts_from {
+        match ctx.minimise(ctx.coords(&v), &moving) {
+            Ok(m) => minima.push(m),
+            Err(e) => last_error = e.to_string(),
+        }
+    }
+    minima.sort_by(|a, b| a.0.total_cmp(&b.0));
+    if minima.is_empty() {
+        return Err(Error::FitFailed {
+            starts,
+            last: last_error,
+        });
+    }
+    let best = minima.remove(0);
+    probes.extend(minima);
+    analyse(&ctx, best, &probes, fixed, &free, &moving)
+}
+
+/// The weighted sum of squared residuals of `data` for the parameter `values` (forward solves at
+/// [`FIT_RTOL`]).
+pub fn misfit(model: &Model, data: &Data, values: &[f64]) -> Result<f64> {
+    let ctx = Ctx::new(model, data, &[]);
+    Ok(ssr(&ctx.residuals(values, FIT_RTOL)?))
+}
+
+/// Uncertainty and identifiability at the estimate (module docs).
+fn analyse(
+    ctx: &Ctx,
+    (best_ssr, values): (f64, Vec<f64>),
+    others: &[(f64, Vec<f64>)],
+    fixed: &[Option<f64>],
+    free: &[usize],
+    moving: &[usize],
+) -> Result<FitResult> {
+    let model = ctx.model;
+    let np = model.params.len();
+    let coords = ctx.coords(&values);
+    let residuals = ctx.residual_list(&values, FIT_RTOL)?;
+    let n = residuals.len();
+    let ss: f64 = residuals.iter().map(|r| r.weighted * r.weighted).sum();
+    let rms_residual = (ss / n as f64).sqrt();
+
+    // SVD of the weighted Jacobian over every free coordinate
+    let cols = if free.is_empty() {
+        Vec::new()
+    } else {
+        ctx.jacobian(&coords, free)?
+    };
+    let j = nalgebra::DMatrix::from_fn(n, free.len(), |i, k| cols[k][i]);
+    let (sv, v_t) = if free.is_empty() {
+        (Vec::new(), nalgebra::DMatrix::zeros(0, 0))
+    } else {
+        let svd = j.svd(false, true);
+        let v_t = svd.v_t.ok_or(Error::NonFinite {
+            what: "fit Jacobian SVD",
+            value: f64::NAN,
+        })?;
+        (svd.singular_values.iter().copied().collect::<Vec<_>>(), v_t)
+    };
+    for &s in &sv {
+        if !s.is_finite() {
+            return Err(Error::NonFinite {
+                what: "fit Jacobian singular value",
+                value: s,
+            });
+        }
+    }
+    let s_max = sv.iter().copied().fold(0.0, f64::max);
+    let in_range = |k: usize| sv[k] > FIT_NULL_RATIO * s_max && s_max > 0.0;
+    let rank = (0..sv.len()).filter(|&k| in_range(k)).count();
+    let dof = n.saturating_sub(rank);
+    let noise_scale = if ctx.data.noise_known() {
+        Some(1.0)
+    } else if dof > 0 {
+        Some((ss / dof as f64).sqrt())
+    } else {
+        None
+    };
+    let quantile = match noise_scale {
+        None => None,
+        Some(_) if ctx.data.noise_known() => Some(normal_quantile()),
+        Some(_) => Some(t_quantile(dof)),
+    };
+    // covariance on the identified subspace, in the full coordinate numbering
+    let covariance = noise_scale.map(|s| {
+        let mut c = vec![vec![0.0; np]; np];
+        for k in (0..sv.len()).filter(|&k| in_range(k)) {
+            for (a, &ia) in free.iter().enumerate() {
+                for (b, &ib) in free.iter().enumerate() {
+                    c[ia][ib] += s * s * v_t[(k, a)] * v_t[(k, b)] / (sv[k] * sv[k]);
+                }
+            }
+        }
+        c
+    });
+    // the null-space component of a direction a (full numbering) over the free coordinates:
+    // the norm of what is left after projecting it onto the identified right singular vectors,
+    // relative to its free part (independent of the basis the SVD picks for the null space, and
+    // right when the SVD has fewer rows than free coordinates: n < p leaves p - n null
+    // directions without a row of v_t)
+    let null_component = |a: &[f64]| -> f64 {
+        let norm2 = free.iter().map(|&i| a[i] * a[i]).sum::<f64>();
+        if norm2 == 0.0 {
+            return 0.0;
+        }
+        let in_span: f64 = (0..sv.len())
+            .filter(|&k| in_range(k))
+            .map(|k| {
+                let p = free
+                    .iter()
+                    .enumerate()
+                    .map(|(b, &ib)| v_t[(k, b)] * a[ib])
+                    .sum::<f64>();
+                p * p
+            })
+            .sum();
+        (1.0 - in_span / norm2).max(0.0).sqrt()
+    };
+    let estimate = |name: String,
+                    unit: &'static str,
+                    a: &[f64],
+                    coord: f64,
+                    back: &dyn Fn(f64) -> f64,
+                    is_fixed: bool|
+     -> Estimate {
+        let value = back(coord);
+        if is_fixed {
+            return Estimate {
+                name,
+                unit,
+                value: Some(value),
+                ci95: Some((value, value)),
+                se: Some(0.0),
+                identifiable: true,
+                fixed: true,
+                note: "fixed".into(),
+            };
+        }
+        if null_component(a) > FIT_NULL_COMPONENT {
+            return Estimate {
+                name,
+                unit,
+                value: None,
+                ci95: None,
+                se: None,
+                identifiable: false,
+                fixed: false,
+                note: "not determined by the data (a null direction of the Jacobian)".into(),
+            };
+        }
+        let (Some(c), Some(q)) = (&covariance, quantile) else {
+            return Estimate {
+                name,
+                unit,
+                value: Some(value),
+                ci95: None,
+                se: None,
+                identifiable: false,
+                fixed: false,
+                note: "no residual degrees of freedom to estimate the noise (give cor_sd)".into(),
+            };
+        };
+        let var: f64 = (0..np)
+            .map(|i| (0..np).map(|k| a[i] * c[i][k] * a[k]).sum::<f64>())
+            .sum();
+        let se = var.max(0.0).sqrt();
+        let half = q * se;
+        let lo = back(coord - half);
+        let hi = back(coord + half);
+        let wide = !(half <= FIT_MAX_HALF_WIDTH);
+        Estimate {
+            name,
+            unit,
+            value: Some(value),
+            ci95: Some((lo.min(hi), lo.max(hi))),
+            se: Some(se),
+            identifiable: !wide,
+            fixed: false,
+            note: if wide {
+                "poorly determined: the 95 % interval spans more than a factor 10 either way \
+                 (in the parameter's coordinate)"
+                    .into()
+            } else {
+                String::new()
+            },
+        }
+    };
+    let parameters: Vec<Estimate> = model
+        .params
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let mut a = vec![0.0; np];
+            a[i] = 1.0;
+            estimate(
+                p.name.clone(),
+                p.unit,
+                &a,
+                coords[i],
+                &|c| p.kind.from_coord(c),
+                fixed[i].is_some(),
+            )
+        })
+        .collect();
+    let groups: Vec<Estimate> = model
+        .groups(&values)
+        .into_iter()
+        .map(|(name, value, mut grad)| {
+            // coordinates: the Poisson coordinate does not enter; fixed ones do not vary
+            for (g, f) in grad.iter_mut().zip(fixed) {
+                if f.is_some() {
+                    *g = 0.0;
+                }
+            }
+            let all_fixed = grad.iter().all(|g| *g == 0.0);
+            let unit = if name == "p2" { "1" } else { "Pa^(2/5) s" };
+            estimate(
+                name.to_string(),
+                unit,
+                &grad,
+                value.ln(),
+                &f64::exp,
+                all_fixed,
+            )
+        })
+        .collect();
+    let mut parameters = parameters;
+    let mut groups = groups;
+    if let (Some(s), Some(q)) = (noise_scale, quantile) {
+        let threshold = q * q * s * s;
+        // the profile likelihood where the Wald interval is too wide to trust
+        for &i in moving {
+            let e = &mut parameters[i];
+            if e.identifiable || e.value.is_none() || e.ci95.is_none() {
+                continue;
+            }
+            let kind = model.params[i].kind;
+            let (lo, hi) = ctx.profile(&coords, best_ssr, i, moving, threshold);
+            let back = |c: Option<f64>| c.map(|c| kind.from_coord(c));
+            match (back(lo), back(hi)) {
+                (Some(a), Some(b)) => {
+                    e.ci95 = Some((a.min(b), a.max(b)));
+                    e.identifiable = true;
+                    e.note = "profile-likelihood interval (the Wald interval was too wide)".into();
+                }
+                (a, b) => {
+                    e.ci95 = None;
+                    e.note = format!(
+                        "not determined: the profile likelihood stays within the 95 % threshold \
+                         {} (bounds found: {}, {})",
+                        "up to four decades (or the nu range) from the estimate",
+                        a.map_or("none".to_string(), |x| format!("{x:.4e}")),
+                        b.map_or("none".to_string(), |x| format!("{x:.4e}"))
+                    );
+                }
+            }
+        }
+        // another point met by the fit (a minimum of another start, or of a nu level with nu
+        // held) whose misfit is within the likelihood-ratio threshold: the profile of every
+        // parameter lies at or below it there, so every interval is widened to contain it (and
+        // judged again by its reach)
+        for (other_ssr, other) in others.iter().filter(|o| o.0 - best_ssr <= threshold) {
+            let note = format!(
+                "interval widened to another point within the 95 % threshold of the misfit (SSR \
+                 {other_ssr:.4e} against {best_ssr:.4e})"
+            );
+            let widen = |e: &mut Estimate, v: f64, to_coord: &dyn Fn(f64) -> f64| {
+                let (Some((lo, hi)), Some(x), false) = (e.ci95, e.value, e.fixed) else {
+                    return;
+                };
+                if lo <= v && v <= hi {
+                    return;
+                }
+                let (lo, hi) = (lo.min(v), hi.max(v));
+                e.ci95 = Some((lo, hi));
+                e.note.clone_from(&note);
+                let reach = (to_coord(lo) - to_coord(x))
+                    .abs()
+                    .max((to_coord(hi) - to_coord(x)).abs());
+                if !(reach <= FIT_MAX_HALF_WIDTH) {
+                    e.identifiable = false;
+                    e.note
+                        .push_str(", which spans more than a factor 10 either way");
+                }
+            };
+            for ((e, v), p) in parameters.iter_mut().zip(other).zip(&model.params) {
+                widen(e, *v, &|x| p.kind.to_coord(x));
+            }
+            for (e, g) in groups.iter_mut().zip(model.groups(other)) {
+                widen(e, g.1, &f64::ln);
+            }
+        }
+    }
+    let verdict = verdict(&parameters, &groups);
+    Ok(FitResult {
+        model: model.clone(),
+        data: ctx.data.clone(),
+        values,
+        fixed: fixed.to_vec(),
+        parameters,
+        groups,
+        residuals,
+        rms_residual,
+        dof,
+        noise_scale,
+        quantile,
+        singular_values: sv,
+        covariance,
+        solves: ctx.solves.get(),
+        verdict,
+    })
+}
+
+/// One line: which parameters and groups the data determine.
+fn verdict(parameters: &[Estimate], groups: &[Estimate]) -> String {
+    let names = |list: &[&Estimate]| {
+        if list.is_empty() {
+            "none".to_string()
+        } else {
+            list.iter()
+                .map(|e| e.name.as_str())
+                .collect::<Vec<_>>()
+                .join(", ")
+        }
+    };
+    let det: Vec<&Estimate> = parameters
+        .iter()
+        .chain(groups)
+        .filter(|e| e.identifiable && !e.fixed)
+        .collect();
+    let not: Vec<&Estimate> = parameters
+        .iter()
+        .chain(groups)
+        .filter(|e| !e.identifiable)
+        .collect();
+    format!(
+        "determined by the data: {}; not determined: {}",
+        names(&det),
+        names(&not)
+    )
+}
+
+/// The 97.5 % quantile of the standard normal distribution.
+pub fn normal_quantile() -> f64 {
+    use statrs::distribution::{ContinuousCDF, Normal};
+    Normal::standard().inverse_cdf(0.975)
+}
+
+/// The 97.5 % quantile of Student's `t` with `dof >= 1` degrees of freedom.
+pub fn t_quantile(dof: usize) -> f64 {
+    use statrs::distribution::{ContinuousCDF, StudentsT};
+    match StudentsT::new(0.0, 1.0, dof.max(1) as f64) {
+        Ok(t) => t.inverse_cdf(0.975),
+        Err(_) => f64::NAN,
+    }
+}
+
+impl FitResult {
+    /// The estimate called `name` among the parameters and groups.
+    pub fn get(&self, name: &str) -> Option<&Estimate> {
+        self.parameters
+            .iter()
+            .chain(&self.groups)
+            .find(|e| e.name == name)
+    }
+
+    /// Fitted CoR and contact time of `sphere` at `v0` with their standard deviations from the
+    /// covariance (delta method; `None` without one). `solves` counts the forward solves.
+    pub fn predict(&self, sphere: Sphere, v0: f64) -> Result<Prediction> {
+        let opts = SolveOptions {
+            rtol: FIT_RTOL,
+            ..Default::default()
+        };
+        let at = |values: &[f64]| -> Result<(f64, f64)> {
+            let o = solve(&self.model.impact(sphere, v0, values)?, &opts)?;
+            Ok((o.cor, o.contact_time))
+        };
+        let (cor, contact_time) = at(&self.values)?;
+        let mut sd = None;
+        if let Some(c) = &self.covariance {
+            let coords: Vec<f64> = self
+                .model
+                .params
+                .iter()
+                .zip(&self.values)
+                .map(|(p, v)| p.kind.to_coord(*v))
+                .collect();
+            let np = coords.len();
+            let mut grad = vec![(0.0, 0.0); np];
+            for (i, g) in grad.iter_mut().enumerate() {
+                if self.fixed[i].is_some() {
+                    continue;
+                }
+                let vals = |d: f64| {
+                    let mut x = coords.clone();
+                    x[i] += d;
+                    let v: Vec<f64> = self
+                        .model
+                        .params
+                        .iter()
+                        .zip(&x)
+                        .map(|(p, c)| p.kind.from_coord(*c))
+                        .collect();
+                    at(&v)
+                };
+                let (p, m) = (vals(FIT_FD_STEP)?, vals(-FIT_FD_STEP)?);
+                *g = (
+                    (p.0 - m.0) / (2.0 * FIT_FD_STEP),
+                    (p.1 - m.1) / (2.0 * FIT_FD_STEP),
+                );
+            }
+            let quad = |f: &dyn Fn(usize) -> f64| -> f64 {
+                (0..np)
+                    .map(|i| (0..np).map(|k| f(i) * c[i][k] * f(k)).sum::<f64>())
+                    .sum::<f64>()
+                    .max(0.0)
+                    .sqrt()
+            };
+            sd = Some((quad(&|i| grad[i].0), quad(&|i| grad[i].1)));
+        }
+        Ok(Prediction {
+            v0,
+            cor,
+            contact_time,
+            sd,
+        })
+    }
+}
+
+/// The fitted model at one velocity.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Prediction {
+    /// Impact velocity (m/s).
+    pub v0: f64,
+    /// CoR.
+    pub cor: f64,
+    /// Contact time (s).
+    pub contact_time: f64,
+    /// Standard deviations of CoR and contact time (s) from the parameter covariance.
+    pub sd: Option<(f64, f64)>,
+}
+
+/// The fixed relaxation times of `prony:N` (s): `N` log-spaced times over `MIN:MAX` (`range`),
+/// or by default from the measured contact times (the shortest / 100 to the longest x 100; one
+/// time: their geometric mean). Without contact times `range` is required. Empty for the
+/// standard solid.
+pub fn prony_times(kind: &ModelKind, range: Option<&str>, data: &Data) -> Result<Vec<f64>> {
+    let ModelKind::Prony { n } = *kind else {
+        return match range {
+            Some(_) => Err(Error::Unsupported(
+                "--tau-range applies to --model prony:N only".into(),
+            )),
+            None => Ok(Vec::new()),
+        };
+    };
+    let (lo, hi) = match range {
+        Some(s) => {
+            let bad = || {
+                Error::Unsupported(format!(
+                    "--tau-range '{}': expected MIN:MAX (s) with 0 < MIN < MAX < inf",
+                    crate::error::escape_text(s)
+                ))
+            };
+            let (a, b) = s.split_once(':').ok_or_else(bad)?;
+            let a: f64 = a.trim().parse().map_err(|_| bad())?;
+            let b: f64 = b.trim().parse().map_err(|_| bad())?;
+            if !(a > 0.0 && a < b && b.is_finite()) {
+                return Err(bad());
+            }
+            (a, b)
+        }
+        None => {
+            let t: Vec<f64> = data
+                .observations
+                .iter()
+                .filter_map(|o| o.contact_time)
+                .collect();
+            if t.is_empty() {
+                return Err(Error::Unsupported(
+                    "--model prony:N without contact times needs --tau-range MIN:MAX (s)".into(),
+                ));
+            }
+            let a = t.iter().copied().fold(f64::INFINITY, f64::min) / 100.0;
+            let b = t.iter().copied().fold(0.0, f64::max) * 100.0;
+            (a, b)
+        }
+    };
+    Ok((0..n)
+        .map(|i| {
+            if n == 1 {
+                (lo * hi).sqrt()
+            } else {
+                (lo.ln() + (hi / lo).ln() * i as f64 / (n - 1) as f64).exp()
+            }
+        })
+        .collect())
+}

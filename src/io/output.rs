@@ -1,0 +1,269 @@
+//! Writing results: atomic file writes, history CSV, the human-readable summary.
+
+use std::io::Write;
+use std::path::Path;
+
+use crate::error::{Error, Result};
+use crate::model::bodies::BodyMaterial;
+use crate::model::impact::{History, Impact, ImpactMaterial, Outcome};
+use crate::model::material::{Bulk, BulkRheology, GeneralMaterial, Material};
+
+/// Write a file atomically: the bytes go to a temporary file in the same directory, which is
+/// renamed over `path` only when complete. Parent directories are created.
+pub fn write_atomic(path: &Path, write: impl FnOnce(&mut dyn Write) -> Result<()>) -> Result<()> {
+    let dir = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+    let mut tmp = tempfile::NamedTempFile::new_in(dir).map_err(|e| Error::io(dir, e))?;
+    {
+        let mut buf = std::io::BufWriter::new(tmp.as_file_mut());
+        write(&mut buf)?;
+        buf.flush().map_err(|e| Error::io(path, e))?;
+    }
+    tmp.persist(path).map_err(|e| Error::io(path, e.error))?;
+    Ok(())
+}
+
+/// Write several files atomically ([`write_atomic`]), all or none: when one fails, the ones
+/// already written by this call are removed again.
+pub fn write_all_atomic(files: &[(&Path, &[u8])]) -> Result<()> {
+    for (k, (path, body)) in files.iter().enumerate() {
+        if let Err(e) = write_atomic(path, |w| w.write_all(body).map_err(|e| Error::io(path, e))) {
+            for (done, _) in &files[..k] {
+                let _ = std::fs::remove_file(done);
+            }
+            return Err(e);
+        }
+    }
+    Ok(())
+}
+
+/// Write a history as CSV with the header `t,d,v,force,a` (SI: s, m, m/s, N, m).
+pub fn write_history_csv(path: &Path, h: &History) -> Result<()> {
+    write_atomic(path, |w| {
+        let mut c = csv::Writer::from_writer(w);
+        let io = |e: csv::Error| Error::io(path, e);
+        c.write_record(["t", "d", "v", "force", "a"]).map_err(io)?;
+        for i in 0..h.len() {
+            c.write_record(&[
+                fmt(h.t[i]),
+                fmt(h.d[i]),
+                fmt(h.v[i]),
+                fmt(h.force[i]),
+                fmt(h.a[i]),
+            ])
+            .map_err(io)?;
+        }
+        c.flush().map_err(|e| Error::io(path, e))?;
+        Ok(())
+    })
+}
+
+/// Full-precision, round-trip formatting of an `f64` for CSV.
+pub fn fmt(x: f64) -> String {
+    format!("{x:e}")
+}
+
+/// One line describing a standard solid.
+fn standard_solid(m: &Material) -> String {
+    let nu = if m.bulk() == Bulk::Incompressible {
+        0.5
+    } else {
+        m.poisson()
+    };
+    format!(
+        "G_inf = {:.4e} Pa, G_1 = {:.4e} Pa, eta = {:.4e} Pa s, nu = {}",
+        m.g_inf(),
+        m.g_1(),
+        m.eta(),
+        if nu == 0.5 {
+            "0.5 (incompressible)".to_string()
+        } else {
+            format!("{nu:.6}")
+        }
+    )
+}
+
+/// One line describing a general material.
+fn general(m: &GeneralMaterial) -> String {
+    let shear = m.shear();
+    let bulk = match m.bulk() {
+        BulkRheology::Incompressible | BulkRheology::Poisson(_) => "incompressible".to_string(),
+        BulkRheology::Elastic(k) => format!("elastic, K_0 = {k:.4e} Pa"),
+        BulkRheology::Prony(p) => format!(
+            "{} term{}, k_inf = {:.4e} Pa",
+            p.terms().len(),
+            if p.terms().len() == 1 { "" } else { "s" },
+            p.k_inf()
+        ),
+    };
+    format!(
+        "general: {} shear term{}, g_inf = {:.4e} Pa; bulk {bulk}",
+        shear.terms().len(),
+        if shear.terms().len() == 1 { "" } else { "s" },
+        shear.g_inf()
+    )
+}
+
+/// Human-readable summary of an impact and its outcome, with units.
+///
+/// The line of dimensionless groups (Eq. 11) is printed for the standard solid only; a general
+/// material is described by its number of shear and bulk terms, `g_inf` and the glassy and
+/// relaxed `G_eq`.
+/// For two bodies it lists both bodies and their velocities after the impact.
+pub fn summary(impact: &Impact, o: &Outcome) -> String {
+    let s = impact.sphere();
+    let mut out = String::new();
+    let mut line = |k: &str, v: String| out.push_str(&format!("{k:<28}{v}\n"));
+    line(
+        "sphere",
+        format!("m = {:.6e} kg, R = {:.6e} m", s.mass(), s.radius()),
+    );
+    line("impact velocity", format!("{:.6e} m/s", impact.velocity()));
+    match impact.material() {
+        ImpactMaterial::StandardSolid(m) => line("material", standard_solid(m)),
+        ImpactMaterial::General(m) => line("material", general(m)),
+        ImpactMaterial::TwoBodies(b) => {
+            for (name, body) in [("body A", b.a()), ("body B", b.b())] {
+                line(
+                    name,
+                    format!(
+                        "m = {:.6e} kg, R = {:.6e} m; {}",
+                        body.mass(),
+                        body.radius(),
+                        match body.material() {
+                            BodyMaterial::Rigid => "rigid".to_string(),
+                            BodyMaterial::StandardSolid(m) => standard_solid(m),
+                            BodyMaterial::General(m) => general(m),
+                        }
+                    ),
+                );
+            }
+            line(
+                "  (sphere above:",
+                "effective mass and radius; velocity: relative)".to_string(),
+            );
+        }
+    }
+    let geq = impact.equivalent_relaxation();
+    match impact.groups() {
+        Some(g) => line(
+            "groups (Eq. 11)",
+            format!(
+                "p1 = nu = {:.6}, p2 = {:.6e}, p3 = {:.6e}",
+                g.nu, g.p2, g.p3
+            ),
+        ),
+        None => line(
+            "G_eq (docs/theory.md §8)",
+            format!(
+                "{} terms, glassy {:.6e} Pa, relaxed {:.6e} Pa",
+                geq.terms.len(),
+                geq.glassy(),
+                geq.relaxed
+            ),
+        ),
+    }
+    line("solver", o.solver.to_string());
+    if let Some(why) = &o.fallback {
+        line("  instead of fast", why.clone());
+    }
+    line("coefficient of restitution", format!("{:.9}", o.cor));
+    if let Some(est) = o.cor_error_estimate {
+        // every solver's estimate is at most the requested rtol on success (see README)
+        line("  estimated rel. error", format!("{est:.1e}"));
+    }
+    line(
+        "rebound velocity",
+        format!("{:.6e} m/s", o.rebound_velocity),
+    );
+    if let Some(b) = impact.bodies() {
+        let (va, vb) = b.rebound_velocities(impact.velocity(), o.cor);
+        line(
+            "  body velocities after",
+            format!("A {va:.6e} m/s, B {vb:.6e} m/s (B at rest before)"),
+        );
+    }
+    line("contact time", format!("{:.6e} s", o.contact_time));
+    line("max indentation", format!("{:.6e} m", o.max_indentation));
+    line(
+        "time of max indentation",
+        format!("{:.6e} s", o.time_of_max_indentation),
+    );
+    line("max force", format!("{:.6e} N", o.max_force));
+    line(
+        "max contact radius",
+        format!("{:.6e} m", o.max_contact_radius),
+    );
+    line(
+        "dissipated energy",
+        format!("{:.6e} J", o.dissipated_energy),
+    );
+    line(
+        "work",
+        format!(
+            "{} steps, {} elements, {} element updates, {} evaluations, {} levels",
+            o.work.steps,
+            o.work.elements,
+            o.work.element_updates,
+            o.work.evaluations,
+            o.work.levels
+        ),
+    );
+    out
+}
+
+/// The outcome as one JSON object (SI units, the keys of [`Outcome`]): `cor`,
+/// `rebound_velocity` (m/s), `contact_time` (s), `max_indentation` (m),
+/// `time_of_max_indentation` (s), `max_force` (N), `max_contact_radius` (m),
+/// `dissipated_energy` (J), `solver`, `estimated_rel_error` (null when the solver gives none),
+/// `fallback` (null, or why `auto` did not answer with `fast`) and `work`
+/// (`steps`, `elements`, `element_updates`, `evaluations`, `levels`).
+pub fn json(o: &Outcome) -> String {
+    value(o).to_string()
+}
+
+/// [`json`] of an impact's outcome: for a two-body collision with the key `bodies`
+/// (`{"a": {"rebound_velocity": ..}, "b": {..}}`, m/s, positive in A's approach direction, in
+/// the frame where B was at rest before the impact; see
+/// [`crate::model::bodies::TwoBodies::rebound_velocities`]); `max_indentation` is then the total
+/// compression of the two bodies.
+pub fn impact_json(impact: &Impact, o: &Outcome) -> String {
+    let mut v = value(o);
+    if let (Some(b), Some(map)) = (impact.bodies(), v.as_object_mut()) {
+        let (va, vb) = b.rebound_velocities(impact.velocity(), o.cor);
+        map.insert(
+            "bodies".into(),
+            serde_json::json!({
+                "a": {"rebound_velocity": va},
+                "b": {"rebound_velocity": vb},
+            }),
+        );
+    }
+    v.to_string()
+}
+
+fn value(o: &Outcome) -> serde_json::Value {
+    serde_json::json!({
+        "cor": o.cor,
+        "rebound_velocity": o.rebound_velocity,
+        "contact_time": o.contact_time,
+        "max_indentation": o.max_indentation,
+        "time_of_max_indentation": o.time_of_max_indentation,
+        "max_force": o.max_force,
+        "max_contact_radius": o.max_contact_radius,
+        "dissipated_energy": o.dissipated_energy,
+        "solver": o.solver,
+        "estimated_rel_error": o.cor_error_estimate,
+        "fallback": o.fallback,
+        "work": {
+            "steps": o.work.steps,
+            "elements": o.work.elements,
+            "element_updates": o.work.element_updates,
+            "evaluations": o.work.evaluations,
+            "levels": o.work.levels,
+        },
+    })
+}

@@ -1,0 +1,196 @@
+//! Charts (SVG, plotters): force histories.
+
+use std::path::Path;
+
+use plotters::prelude::*;
+
+use crate::error::{Error, Result};
+use crate::io::output::write_atomic;
+use crate::model::impact::History;
+
+/// Force-time plot of an impact history (time in ms, force in N) as SVG.
+pub fn force_history_svg(path: &Path, h: &History, title: &str) -> Result<()> {
+    let series = vec![(
+        "MDR".to_string(),
+        h.t.iter()
+            .zip(&h.force)
+            .map(|(t, f)| (t * 1e3, *f))
+            .collect::<Vec<_>>(),
+    )];
+    line_chart_svg(path, title, "time t (ms)", "contact force F (N)", &series)
+}
+
+/// A line chart of one or more named series as SVG, written atomically.
+pub fn line_chart_svg(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    series: &[(String, Vec<(f64, f64)>)],
+) -> Result<()> {
+    let mut svg = String::new();
+    {
+        let (mut x0, mut x1, mut y0, mut y1) = (
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        );
+        for (_, pts) in series {
+            for &(x, y) in pts {
+                if x.is_finite() && y.is_finite() {
+                    x0 = x0.min(x);
+                    x1 = x1.max(x);
+                    y0 = y0.min(y);
+                    y1 = y1.max(y);
+                }
+            }
+        }
+        if !(x0 < x1) {
+            return Err(Error::Unsupported(format!(
+                "{}: nothing to plot",
+                path.display()
+            )));
+        }
+        if !(y0 < y1) {
+            y1 = y0 + 1.0;
+        }
+        let pad = 0.05 * (y1 - y0);
+        let root = SVGBackend::with_string(&mut svg, (900, 560)).into_drawing_area();
+        let e = |e: &dyn std::fmt::Display| Error::io(path, e);
+        root.fill(&WHITE).map_err(|x| e(&x))?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 22))
+            .margin(12)
+            .x_label_area_size(44)
+            .y_label_area_size(70)
+            .build_cartesian_2d(x0..x1, (y0 - pad)..(y1 + pad))
+            .map_err(|x| e(&x))?;
+        chart
+            .configure_mesh()
+            .x_desc(x_label)
+            .y_desc(y_label)
+            .draw()
+            .map_err(|x| e(&x))?;
+        for (i, (name, pts)) in series.iter().enumerate() {
+            let color = Palette99::pick(i).to_rgba();
+            chart
+                .draw_series(LineSeries::new(pts.iter().copied(), color.stroke_width(2)))
+                .map_err(|x| e(&x))?
+                .label(name.as_str())
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
+                });
+        }
+        if series.len() > 1 {
+            chart
+                .configure_series_labels()
+                .position(SeriesLabelPosition::UpperRight)
+                .border_style(BLACK)
+                .background_style(WHITE.mix(0.8))
+                .draw()
+                .map_err(|x| e(&x))?;
+        }
+        root.present().map_err(|x| e(&x))?;
+    }
+    write_atomic(path, |w| {
+        w.write_all(svg.as_bytes()).map_err(|e| Error::io(path, e))
+    })
+}
+
+/// Top of the CoR axis: `e` runs from 0 to a little above 1, so that the line `e = 1` stays
+/// visible.
+pub const COR_AXIS_TOP: f64 = 1.05;
+
+/// One line of a CoR chart: legend name, points `(v0, e)`, colour and stroke width (px).
+pub type CorLine = (String, Vec<(f64, f64)>, RGBColor, u32);
+
+/// The SVG text of a chart of `e` (0 to [`COR_AXIS_TOP`]) against `v0` from `x0` to `x1` (m/s,
+/// logarithmic axis with `log`), the `lines` drawn in order and named in a legend at the lower
+/// left. Rendered in memory only; `path` names the file in errors.
+pub fn cor_chart_svg(
+    path: &Path,
+    title: &str,
+    (x0, x1): (f64, f64),
+    log: bool,
+    lines: &[CorLine],
+) -> Result<String> {
+    type Chart<'a, 'b, X> =
+        ChartContext<'a, SVGBackend<'b>, Cartesian2d<X, plotters::coord::types::RangedCoordf64>>;
+    fn draw<'a, 'b: 'a, X>(
+        path: &Path,
+        chart: &mut Chart<'a, 'b, X>,
+        lines: &[CorLine],
+    ) -> Result<()>
+    where
+        X: Ranged<ValueType = f64> + plotters::coord::ranged1d::ValueFormatter<f64>,
+    {
+        let e = |e: &dyn std::fmt::Display| Error::io(path, e);
+        chart
+            .configure_mesh()
+            .x_desc("impact velocity v0 (m/s)")
+            .y_desc("coefficient of restitution e")
+            .draw()
+            .map_err(|x| e(&x))?;
+        for (name, pts, color, width) in lines {
+            let style = color.stroke_width(*width);
+            chart
+                .draw_series(LineSeries::new(pts.iter().copied(), style))
+                .map_err(|x| e(&x))?
+                .label(name.as_str())
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::LowerLeft)
+            .border_style(BLACK)
+            .background_style(WHITE.mix(0.85))
+            .draw()
+            .map_err(|x| e(&x))?;
+        Ok(())
+    }
+
+    if !(x0 < x1) {
+        return Err(Error::Unsupported(format!(
+            "{}: a curve needs at least two velocities",
+            path.display()
+        )));
+    }
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (900, 560)).into_drawing_area();
+        let e = |e: &dyn std::fmt::Display| Error::io(path, e);
+        root.fill(&WHITE).map_err(|x| e(&x))?;
+        let mut builder = ChartBuilder::on(&root);
+        builder
+            .caption(title, ("sans-serif", 22))
+            .margin(12)
+            .x_label_area_size(44)
+            .y_label_area_size(70);
+        if log {
+            let mut chart = builder
+                .build_cartesian_2d((x0..x1).log_scale(), 0.0..COR_AXIS_TOP)
+                .map_err(|x| e(&x))?;
+            draw(path, &mut chart, lines)?;
+        } else {
+            let mut chart = builder
+                .build_cartesian_2d(x0..x1, 0.0..COR_AXIS_TOP)
+                .map_err(|x| e(&x))?;
+            draw(path, &mut chart, lines)?;
+        }
+        root.present().map_err(|x| e(&x))?;
+    }
+    Ok(svg)
+}
+
+/// The velocity range `(first, last)` of a curve's velocities (m/s); an error unless there are
+/// two of them.
+pub fn velocity_span(path: &Path, velocities: &[f64]) -> Result<(f64, f64)> {
+    match (velocities.first(), velocities.last()) {
+        (Some(a), Some(b)) if velocities.len() >= 2 => Ok((*a, *b)),
+        _ => Err(Error::Unsupported(format!(
+            "{}: a curve needs at least two velocities",
+            path.display()
+        ))),
+    }
+}

@@ -1,0 +1,689 @@
+//! Scenes: a strict TOML description of one impact, its solver and its requested outputs.
+//!
+//! ```toml
+//! # SI units throughout
+//! [sphere]
+//! mass = 4.11e-3        # kg
+//! radius = 5.0e-3       # m
+//!
+//! [impact]
+//! velocity = 1.0        # m/s, normal approach speed
+//!
+//! [material]
+//! g_inf = 1.0e6         # Pa, relaxed shear modulus G_inf
+//! g_1 = 1.0e7           # Pa, relaxing shear modulus G_1
+//! eta = 500.0           # Pa s, shear viscosity
+//! poisson = 0.49        # static Poisson ratio, -1 < nu <= 0.5 (0.5 = incompressible)
+//! # k_0 = 5.0e7         # Pa, bulk modulus: give either poisson or k_0, not both
+//!
+//! [solver]              # optional
+//! name = "auto"         # auto | fast | reference | mdr | mdr-euler
+//! rtol = 1e-6           # requested relative accuracy of the CoR
+//! # elements = 200      # explicit MDR resolution (both or neither; mdr, mdr-euler, auto only):
+//! # steps = 2000        #   2..=10^6 elements per contact radius, 4..=10^9 steps per contact time
+//!
+//! [output]              # optional; nothing here means: summary only, no histories computed
+//! history = "out/history.csv"   # CSV t,d,v,force,a in SI
+//! plot = "out/force.svg"        # force-time plot
+//! ```
+//!
+//! A general material replaces the `[material]` keys by two tables (all forms in README's
+//! scene-format section):
+//!
+//! ```toml
+//! [material.shear]
+//! g_inf = 1.0e3                        # Pa, relaxed shear modulus
+//! terms = [[1.0e7, 1.0e-6]]            # [g_i (Pa), tau_i (s)]; or file = "prony.csv"
+//! # instantaneous = 1.0e7              #   or the normalised FE form G0 (1 - sum g_i (1 - e^(-t/tau_i)))
+//! # ratios = [[0.9, 1.0e-6]]
+//! [material.bulk]                      # exactly one of:
+//! incompressible = true                # or k_0 = ..., poisson = ..., k_inf + terms/file,
+//!                                      # instantaneous + ratios
+//! ```
+//!
+//! Unknown keys are errors. Output paths are relative to the working directory; a Prony table
+//! `file` is relative to the scene file ([`Scene::load`]).
+
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+use crate::error::{escape_text, Error, Result};
+use crate::model::bodies::{Body, BodyMaterial, Side, TwoBodies};
+use crate::model::impact::{Impact, Sphere};
+use crate::model::material::{BulkProny, BulkRheology, GeneralMaterial, Material, ShearProny};
+use crate::solvers::{Resolution, SolveOptions, SolverKind};
+
+/// The embedded default scene: a 10 mm steel ball (4.11 g) dropped from 5 cm on a thick,
+/// nearly incompressible elastomer block.
+pub const DEFAULT_SCENE: &str = include_str!("../../scenes/default.toml");
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawScene {
+    sphere: Option<RawSphere>,
+    impact: RawImpact,
+    material: Option<RawMaterial>,
+    body: Option<Vec<RawBody>>,
+    #[serde(default)]
+    solver: RawSolver,
+    #[serde(default)]
+    output: RawOutput,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawSphere {
+    mass: f64,
+    radius: f64,
+}
+
+/// `[[body]]`: `mass` (kg, `inf` allowed) or `density` (kg/m^3), `radius` (m, `inf`: a wall),
+/// and `rigid = true` or a `[body.material]` in the keys of `[material]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawBody {
+    mass: Option<f64>,
+    density: Option<f64>,
+    radius: f64,
+    rigid: Option<bool>,
+    material: Option<RawMaterial>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawImpact {
+    velocity: f64,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawMaterial {
+    rigid: Option<bool>,
+    g_inf: Option<f64>,
+    g_1: Option<f64>,
+    eta: Option<f64>,
+    poisson: Option<f64>,
+    k_0: Option<f64>,
+    shear: Option<RawShear>,
+    bulk: Option<RawBulk>,
+}
+
+/// `[material.shear]`: `g_inf` with `terms` or `file`, or `instantaneous` with `ratios`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawShear {
+    g_inf: Option<f64>,
+    terms: Option<Vec<Vec<f64>>>,
+    file: Option<PathBuf>,
+    instantaneous: Option<f64>,
+    ratios: Option<Vec<Vec<f64>>>,
+}
+
+/// `[material.bulk]`: one of `incompressible = true`, `k_0`, `poisson`, `k_inf` with `terms`
+/// or `file`, `instantaneous` with `ratios`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawBulk {
+    incompressible: Option<bool>,
+    k_0: Option<f64>,
+    poisson: Option<f64>,
+    k_inf: Option<f64>,
+    terms: Option<Vec<Vec<f64>>>,
+    file: Option<PathBuf>,
+    instantaneous: Option<f64>,
+    ratios: Option<Vec<Vec<f64>>>,
+}
+
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct RawSolver {
+    name: Option<String>,
+    rtol: Option<f64>,
+    elements: Option<usize>,
+    steps: Option<usize>,
+}
+
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct RawOutput {
+    history: Option<PathBuf>,
+    plot: Option<PathBuf>,
+}
+
+/// A validated scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    /// The impact.
+    pub impact: Impact,
+    /// How to solve it.
+    pub options: SolveOptions,
+    /// Where to write the history CSV, if requested.
+    pub history_csv: Option<PathBuf>,
+    /// Where to write the force-time plot (SVG), if requested.
+    pub plot: Option<PathBuf>,
+}
+
+impl Scene {
+    /// Parse and validate a scene from TOML text; a Prony table `file` is read relative to the
+    /// working directory (see [`Scene::parse_in`]).
+    pub fn parse(text: &str) -> Result<Self> {
+        Self::parse_in(text, Path::new(""))
+    }
+
+    /// Parse and validate a scene from TOML text, reading Prony table files (`file = ...` in
+    /// `[material.shear]` or `[material.bulk]`) relative to the folder `base`.
+    pub fn parse_in(text: &str, base: &Path) -> Result<Self> {
+        let raw: RawScene = toml::from_str(text).map_err(|e| {
+            // one line: toml's message spans several lines with a source excerpt
+            let msg = escape_text(e.message().trim_end());
+            match e.span() {
+                Some(span) => {
+                    let line = text[..span.start.min(text.len())].lines().count().max(1);
+                    Error::Scene(format!("line {line}: {msg}"))
+                }
+                None => Error::Scene(msg),
+            }
+        })?;
+        let impact = match (&raw.body, &raw.sphere, &raw.material) {
+            (Some(bodies), None, None) => collision(bodies, raw.impact.velocity, base)?,
+            (Some(_), _, _) => {
+                return Err(scene_error(
+                    "[[body]] cannot be mixed with [sphere] or [material]: a collision gives \
+                     each body its own material ([body.material])"
+                        .into(),
+                ))
+            }
+            (None, Some(sphere), Some(material)) => {
+                let sphere = Sphere::new(sphere.mass, sphere.radius)?;
+                impact_of(sphere, raw.impact.velocity, material, base)?
+            }
+            (None, sphere, _) => {
+                let missing = if sphere.is_none() {
+                    "[sphere]"
+                } else {
+                    "[material]"
+                };
+                return Err(scene_error(format!(
+                    "missing {missing}: give [sphere] and [material] (one sphere on a \
+                     half-space) or two [[body]] tables (a collision)"
+                )));
+            }
+        };
+        let mut options = SolveOptions::default();
+        if let Some(name) = &raw.solver.name {
+            options.solver = name.parse::<SolverKind>().map_err(|_| {
+                Error::Scene(format!(
+                    "[solver] name = '{}': expected one of {}",
+                    escape_text(name),
+                    SolverKind::NAMES.join(", ")
+                ))
+            })?;
+        }
+        if let Some(rtol) = raw.solver.rtol {
+            options.rtol = rtol;
+        }
+        options.resolution = match (raw.solver.elements, raw.solver.steps) {
+            (Some(elements), Some(steps)) => Some(Resolution { elements, steps }),
+            (None, None) => None,
+            _ => {
+                return Err(Error::Scene(
+                    "[solver]: give both elements and steps, or neither".into(),
+                ))
+            }
+        };
+        let history_csv = raw.output.history;
+        let plot = raw.output.plot;
+        for (field, path) in [("[output] history", &history_csv), ("[output] plot", &plot)] {
+            if path.as_ref().is_some_and(|p| p.as_os_str().is_empty()) {
+                return Err(Error::EmptyPath { field });
+            }
+        }
+        options.history = history_csv.is_some() || plot.is_some();
+        options.validate()?;
+        Ok(Scene {
+            impact,
+            options,
+            history_csv,
+            plot,
+        })
+    }
+
+    /// Read and parse a scene file.
+    pub fn load(path: &Path) -> Result<Self> {
+        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+        let base = path.parent().unwrap_or(Path::new(""));
+        Self::parse_in(&text, base).map_err(|e| match e {
+            Error::Scene(m) => Error::Scene(format!("{}: {m}", path.display())),
+            other => other,
+        })
+    }
+
+    /// The embedded default scene.
+    pub fn default_scene() -> Self {
+        Self::parse(DEFAULT_SCENE).expect("the embedded default scene is valid")
+    }
+}
+
+/// The impact of a one-sphere scene: the standard solid of `[material]` (`g_inf`, `g_1`,
+/// `eta`, `poisson` or `k_0`), or the general material of `[material.shear]` and
+/// `[material.bulk]`.
+fn impact_of(sphere: Sphere, velocity: f64, m: &RawMaterial, base: &Path) -> Result<Impact> {
+    match material_of(m, base)? {
+        BodyMaterial::StandardSolid(m) => Impact::new(sphere, velocity, m),
+        BodyMaterial::General(m) => Impact::with_general(sphere, velocity, m),
+        BodyMaterial::Rigid => Err(scene_error(
+            "[material] rigid = true: a rigid half-space under a rigid sphere has no \
+             compliance; only a [[body]] of a collision can be rigid"
+                .into(),
+        )),
+    }
+}
+
+/// The collision of exactly two `[[body]]` tables at the relative normal velocity `velocity`.
+fn collision(bodies: &[RawBody], velocity: f64, base: &Path) -> Result<Impact> {
+    let [a, b] = bodies else {
+        return Err(scene_error(format!(
+            "[[body]]: found {} bod{}; a collision needs exactly two [[body]] tables",
+            bodies.len(),
+            if bodies.len() == 1 { "y" } else { "ies" }
+        )));
+    };
+    let a = body_of(Side::A, a, base)?;
+    let b = body_of(Side::B, b, base)?;
+    Impact::with_bodies(TwoBodies::new(a, b)?, velocity)
+}
+
+/// One `[[body]]`; its errors name the body (`A` is the first table, `B` the second).
+fn body_of(side: Side, raw: &RawBody, base: &Path) -> Result<Body> {
+    let name = match side {
+        Side::A => "[[body]] A (the first)",
+        Side::B => "[[body]] B (the second)",
+    };
+    let named = |e: Error| match e {
+        Error::Scene(m) => Error::Scene(format!("{name}: {m}")),
+        e @ (Error::OutOfRange { .. } | Error::PronyTerm { .. }) => {
+            Error::Scene(format!("{name}: {e}"))
+        }
+        other => other,
+    };
+    let rigid_flag = raw.rigid.or(raw.material.as_ref().and_then(|m| m.rigid));
+    let material = match (rigid_flag, &raw.material) {
+        (Some(false), _) => {
+            return Err(named(scene_error(
+                "rigid = false: leave it out and give [body.material]".into(),
+            )))
+        }
+        (Some(true), Some(m)) if raw.rigid.is_some() || has_material_keys(m) => {
+            return Err(named(scene_error(
+                "rigid = true cannot be combined with material keys (or given twice)".into(),
+            )))
+        }
+        (Some(true), _) => BodyMaterial::Rigid,
+        (None, Some(m)) => material_of(m, base).map_err(named)?,
+        (None, None) => {
+            return Err(named(scene_error(
+                "missing [body.material] (the keys of [material]) or rigid = true".into(),
+            )))
+        }
+    };
+    match (raw.mass, raw.density) {
+        (Some(mass), None) => Body::new(side, mass, raw.radius, material),
+        (None, Some(rho)) => Body::with_density(side, rho, raw.radius, material),
+        (Some(_), Some(_)) => Err(named(scene_error(
+            "give either mass (kg) or density (kg/m^3), not both".into(),
+        ))),
+        (None, None) => Err(named(scene_error(
+            "missing mass (kg, inf for a wall) or density (kg/m^3)".into(),
+        ))),
+    }
+}
+
+/// True when `m` has any key besides `rigid`.
+fn has_material_keys(m: &RawMaterial) -> bool {
+    m.g_inf.is_some()
+        || m.g_1.is_some()
+        || m.eta.is_some()
+        || m.poisson.is_some()
+        || m.k_0.is_some()
+        || m.shear.is_some()
+        || m.bulk.is_some()
+}
+
+/// The material of a `[material]` table: rigid, standard solid or general.
+fn material_of(m: &RawMaterial, base: &Path) -> Result<BodyMaterial> {
+    if let Some(rigid) = m.rigid {
+        if has_material_keys(m) || !rigid {
+            return Err(scene_error(
+                "[material] rigid: give rigid = true alone, or the material keys without it".into(),
+            ));
+        }
+        return Ok(BodyMaterial::Rigid);
+    }
+    let standard = [
+        ("g_inf", m.g_inf),
+        ("g_1", m.g_1),
+        ("eta", m.eta),
+        ("poisson", m.poisson),
+        ("k_0", m.k_0),
+    ];
+    let given: Vec<&str> = standard
+        .iter()
+        .filter(|(_, v)| v.is_some())
+        .map(|(k, _)| *k)
+        .collect();
+    if m.shear.is_some() || m.bulk.is_some() {
+        if !given.is_empty() {
+            return Err(scene_error(format!(
+                "[material]: {} cannot be mixed with [material.shear]/[material.bulk]: give the \
+                 standard solid (g_inf, g_1, eta, poisson or k_0 in [material]) or the two tables",
+                given.join(", ")
+            )));
+        }
+        let (Some(shear), Some(bulk)) = (&m.shear, &m.bulk) else {
+            let missing = if m.shear.is_none() {
+                "[material.shear]"
+            } else {
+                "[material.bulk]"
+            };
+            return Err(scene_error(format!(
+                "[material]: missing {missing}: a general material needs both [material.shear] \
+                 and [material.bulk]"
+            )));
+        };
+        return Ok(BodyMaterial::General(general_material(shear, bulk, base)?));
+    }
+    for (key, value) in [("g_inf", m.g_inf), ("g_1", m.g_1), ("eta", m.eta)] {
+        if value.is_none() {
+            return Err(scene_error(format!(
+                "[material]: missing {key} (standard solid: g_inf, g_1, eta and poisson or k_0; \
+                 or the tables [material.shear] and [material.bulk])"
+            )));
+        }
+    }
+    let (g_inf, g_1, eta) = (
+        m.g_inf.unwrap_or_default(),
+        m.g_1.unwrap_or_default(),
+        m.eta.unwrap_or_default(),
+    );
+    let material = match (m.poisson, m.k_0) {
+        (Some(nu), None) => Material::with_poisson(g_inf, g_1, eta, nu)?,
+        (None, Some(k)) => Material::new(g_inf, g_1, eta, k)?,
+        (Some(_), Some(_)) => {
+            return Err(scene_error(
+                "[material]: give either poisson or k_0, not both".into(),
+            ))
+        }
+        (None, None) => {
+            return Err(scene_error(
+                "[material]: missing poisson (-1 < nu <= 0.5) or k_0 (Pa)".into(),
+            ))
+        }
+    };
+    Ok(BodyMaterial::StandardSolid(material))
+}
+
+fn scene_error(message: String) -> Error {
+    Error::Scene(message)
+}
+
+/// Which table a Prony series comes from, with the names its errors use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Table {
+    Shear,
+    Bulk,
+}
+
+impl Table {
+    fn name(self) -> &'static str {
+        match self {
+            Table::Shear => "[material.shear]",
+            Table::Bulk => "[material.bulk]",
+        }
+    }
+    /// The relaxed-modulus key (`g_inf`, `k_inf`).
+    fn relaxed(self) -> &'static str {
+        match self {
+            Table::Shear => "g_inf",
+            Table::Bulk => "k_inf",
+        }
+    }
+    /// The full name of `field` of this table for error messages (`&'static str`, as
+    /// [`Error`] keeps it).
+    fn field(self, field: &str) -> &'static str {
+        match (self, field) {
+            (Table::Shear, "g_inf") => "[material.shear] g_inf",
+            (Table::Shear, "instantaneous") => "[material.shear] instantaneous",
+            (Table::Shear, "ratios") => "[material.shear] ratios",
+            (Table::Shear, "ratios.g_i") => "[material.shear] ratios: g_i",
+            (Table::Shear, "ratios.tau_i") => "[material.shear] ratios: tau_i",
+            (Table::Shear, "tau_i") => "[material.shear] terms: tau_i",
+            (Table::Shear, _) => "[material.shear] terms: g_i",
+            (Table::Bulk, "k_inf") => "[material.bulk] k_inf",
+            (Table::Bulk, "k_0") => "[material.bulk] k_0",
+            (Table::Bulk, "nu") => "[material.bulk] poisson",
+            (Table::Bulk, "instantaneous") => "[material.bulk] instantaneous",
+            (Table::Bulk, "ratios") => "[material.bulk] ratios",
+            (Table::Bulk, "ratios.g_i") => "[material.bulk] ratios: k_j",
+            (Table::Bulk, "ratios.tau_i") => "[material.bulk] ratios: theta_j",
+            (Table::Bulk, "theta_j") => "[material.bulk] terms: theta_j",
+            (Table::Bulk, _) => "[material.bulk] terms: k_j",
+        }
+    }
+    /// `e` with its field renamed to the scene key it came from.
+    fn rename(self, e: Error) -> Error {
+        match e {
+            Error::OutOfRange {
+                field,
+                value,
+                allowed,
+            } => Error::OutOfRange {
+                field: self.field(field),
+                value,
+                allowed,
+            },
+            Error::PronyTerm {
+                field,
+                index,
+                value,
+                allowed,
+            } => Error::PronyTerm {
+                field: self.field(field),
+                index,
+                value,
+                allowed,
+            },
+            other => other,
+        }
+    }
+}
+
+/// The keys of a Prony-series form (shared by `[material.shear]` and `[material.bulk]`).
+struct SeriesKeys<'a> {
+    relaxed: Option<f64>,
+    terms: &'a Option<Vec<Vec<f64>>>,
+    file: &'a Option<PathBuf>,
+    instantaneous: Option<f64>,
+    ratios: &'a Option<Vec<Vec<f64>>>,
+}
+
+/// The relaxed modulus (Pa) and the `(modulus` (Pa), `time` (s)`)` pairs of a series form:
+/// `relaxed` with `terms` or `file`, or `instantaneous` with `ratios`
+/// (`G(t) = G0 (1 - sum g_i (1 - exp(-t / tau_i)))`: relaxed `G0 (1 - sum g_i)`, moduli
+/// `g_i G0`). Only checks what the forms need; the moduli and times themselves are checked by
+/// the series constructors.
+fn series_of(table: Table, k: &SeriesKeys<'_>, base: &Path) -> Result<(f64, Vec<(f64, f64)>)> {
+    let t = table.name();
+    let r = table.relaxed();
+    if k.instantaneous.is_some() || k.ratios.is_some() {
+        if k.relaxed.is_some() || k.terms.is_some() || k.file.is_some() {
+            return Err(scene_error(format!(
+                "{t}: instantaneous/ratios (normalised form) cannot be mixed with {r}, terms or \
+                 file"
+            )));
+        }
+        let (Some(g0), Some(ratios)) = (k.instantaneous, k.ratios) else {
+            let missing = if k.instantaneous.is_none() {
+                "instantaneous (Pa)"
+            } else {
+                "ratios = [[ratio, time], ...]"
+            };
+            return Err(scene_error(format!(
+                "{t}: missing {missing} (the normalised form needs instantaneous and ratios)"
+            )));
+        };
+        let g0 = crate::error::check(
+            table.field("instantaneous"),
+            g0,
+            g0 > 0.0,
+            "0 < instantaneous < inf (Pa)",
+        )?;
+        let pairs = pairs_of(t, "ratios", ratios)?;
+        let mut sum = 0.0;
+        for (index, &(g, tau)) in pairs.iter().enumerate() {
+            if !(g.is_finite() && (0.0..1.0).contains(&g)) {
+                return Err(Error::PronyTerm {
+                    field: table.field("ratios.g_i"),
+                    index,
+                    value: g,
+                    allowed: "0 <= ratio < 1",
+                });
+            }
+            if !(tau.is_finite() && tau > 0.0) {
+                return Err(Error::PronyTerm {
+                    field: table.field("ratios.tau_i"),
+                    index,
+                    value: tau,
+                    allowed: "0 < time < inf (s)",
+                });
+            }
+            sum += g;
+        }
+        if sum >= 1.0 {
+            return Err(Error::OutOfRange {
+                field: table.field("ratios"),
+                value: sum,
+                allowed: "a sum of the ratios below 1 (relaxed modulus = instantaneous \
+                          (1 - sum) > 0)",
+            });
+        }
+        let relaxed = g0 * (1.0 - sum);
+        let moduli = pairs.iter().map(|&(g, tau)| (g * g0, tau)).collect();
+        return Ok((relaxed, moduli));
+    }
+    let Some(relaxed) = k.relaxed else {
+        return Err(scene_error(format!(
+            "{t}: missing {r} (Pa, the relaxed modulus) with terms = [[modulus, time], ...] or \
+             file = \"table.csv\"; or instantaneous with ratios"
+        )));
+    };
+    let pairs = match (k.terms, k.file) {
+        (Some(terms), None) => pairs_of(t, "terms", terms)?,
+        (None, Some(file)) => {
+            if file.as_os_str().is_empty() {
+                return Err(scene_error(format!(
+                    "{t} file is an empty path: give a file name"
+                )));
+            }
+            crate::io::prony_table::read_prony_table(&base.join(file))?
+        }
+        (Some(_), Some(_)) => {
+            return Err(scene_error(format!(
+                "{t}: give either terms or file, not both"
+            )))
+        }
+        (None, None) => {
+            return Err(scene_error(format!(
+                "{t}: missing terms = [[modulus, time], ...] (terms = [] for none) or \
+                 file = \"table.csv\" beside {r}"
+            )))
+        }
+    };
+    Ok((relaxed, pairs))
+}
+
+/// `[[a, b], ...]` as pairs; a row that is not a pair is an error naming `table key[index]`.
+fn pairs_of(table: &str, key: &str, rows: &[Vec<f64>]) -> Result<Vec<(f64, f64)>> {
+    rows.iter()
+        .enumerate()
+        .map(|(i, row)| match row.as_slice() {
+            &[a, b] => Ok((a, b)),
+            _ => Err(scene_error(format!(
+                "{table} {key}[{i}]: expected a pair [modulus, time], found {} numbers",
+                row.len()
+            ))),
+        })
+        .collect()
+}
+
+/// The general material of `[material.shear]` and `[material.bulk]`.
+fn general_material(shear: &RawShear, bulk: &RawBulk, base: &Path) -> Result<GeneralMaterial> {
+    let (g_inf, terms) = series_of(
+        Table::Shear,
+        &SeriesKeys {
+            relaxed: shear.g_inf,
+            terms: &shear.terms,
+            file: &shear.file,
+            instantaneous: shear.instantaneous,
+            ratios: &shear.ratios,
+        },
+        base,
+    )?;
+    let shear = ShearProny::new(g_inf, &terms).map_err(|e| Table::Shear.rename(e))?;
+    let series_given = bulk.k_inf.is_some()
+        || bulk.terms.is_some()
+        || bulk.file.is_some()
+        || bulk.instantaneous.is_some()
+        || bulk.ratios.is_some();
+    let forms: Vec<&str> = [
+        ("incompressible", bulk.incompressible.is_some()),
+        ("k_0", bulk.k_0.is_some()),
+        ("poisson", bulk.poisson.is_some()),
+        (
+            "a relaxing bulk (k_inf/terms/file/instantaneous/ratios)",
+            series_given,
+        ),
+    ]
+    .iter()
+    .filter(|(_, given)| *given)
+    .map(|(name, _)| *name)
+    .collect();
+    if forms.len() != 1 {
+        let found = if forms.is_empty() {
+            "none".to_string()
+        } else {
+            forms.join(" and ")
+        };
+        return Err(scene_error(format!(
+            "[material.bulk]: give exactly one of incompressible = true, k_0, poisson, k_inf with \
+             terms or file, instantaneous with ratios; found {found}"
+        )));
+    }
+    let rheology = if let Some(flag) = bulk.incompressible {
+        if !flag {
+            return Err(scene_error(
+                "[material.bulk] incompressible = false: give k_0, poisson, or a relaxing bulk \
+                 instead"
+                    .into(),
+            ));
+        }
+        BulkRheology::Incompressible
+    } else if let Some(k) = bulk.k_0 {
+        BulkRheology::Elastic(k)
+    } else if let Some(nu) = bulk.poisson {
+        BulkRheology::Poisson(nu)
+    } else {
+        let (k_inf, terms) = series_of(
+            Table::Bulk,
+            &SeriesKeys {
+                relaxed: bulk.k_inf,
+                terms: &bulk.terms,
+                file: &bulk.file,
+                instantaneous: bulk.instantaneous,
+                ratios: &bulk.ratios,
+            },
+            base,
+        )?;
+        BulkRheology::Prony(BulkProny::new(k_inf, &terms).map_err(|e| Table::Bulk.rename(e))?)
+    };
+    GeneralMaterial::new(shear, rheology).map_err(|e| Table::Bulk.rename(e))
+}

@@ -1,0 +1,342 @@
+//! General linear viscoelasticity: a Prony series in shear and an incompressible, elastic or
+//! Prony-series bulk (docs/theory.md §8).
+//!
+//! Shear relaxation and bulk relaxation, all moduli in pascal (Pa), all times in seconds (s):
+//!
+//! ```text
+//! G(t) = g_inf + sum_i g_i exp(-t / tau_i)          (0 terms: elastic shear)
+//! K(t) = k_inf + sum_j k_j exp(-t / theta_j)        (or K(t) = K_0, or K = inf)
+//! ```
+//!
+//! The standard solid of the paper (Eq. 1, elastic bulk Eq. 2) is the one-term case
+//! `g_1 = G_1`, `tau_1 = eta / G_1`, see [`GeneralMaterial::from`] and [`Material::general`].
+//!
+//! Constructors validate and normalise: terms are sorted by increasing time, terms with equal
+//! times are merged (their moduli added) and terms whose modulus is zero (after merging) are
+//! dropped. Negative or non-finite moduli, non-positive or non-finite times are refused with
+//! [`Error::PronyTerm`] (field, input index, value); `g_inf <= 0`, `k_inf <= 0`, `K_0 <= 0` and
+//! a Poisson ratio outside `(-1, 0.5]` with [`Error::OutOfRange`].
+
+use super::{Bulk, Material};
+use crate::error::{check, Error, Result};
+
+/// Shear relaxation `G(t) = g_inf + sum_i g_i exp(-t / tau_i)` (docs/theory.md §8), validated.
+///
+/// `g_inf` is the relaxed (static) shear modulus in Pa, `0 < g_inf < inf`; each term is a pair
+/// `(g_i, tau_i)`: modulus in Pa (`0 <= g_i < inf`) and relaxation time in s
+/// (`0 < tau_i < inf`). Terms are kept sorted by increasing `tau_i`, with distinct times and
+/// positive moduli. No terms: an elastic solid with shear modulus `g_inf`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShearProny {
+    g_inf: f64,
+    terms: Vec<(f64, f64)>,
+}
+
+impl ShearProny {
+    /// Validated shear series from `g_inf` (Pa) and the pairs `(g_i` (Pa), `tau_i` (s)`)`.
+    ///
+    /// ```
+    /// # use mdr_impact::model::material::rheology::ShearProny;
+    /// // unsorted, a duplicate time and a zero modulus: sorted, merged, dropped
+    /// let g = ShearProny::new(1.0, &[(2.0, 10.0), (3.0, 0.1), (4.0, 10.0), (0.0, 5.0)]).unwrap();
+    /// assert_eq!(g.terms(), &[(3.0, 0.1), (6.0, 10.0)]);
+    /// assert_eq!(g.glassy(), 10.0);
+    /// ```
+    pub fn new(g_inf: f64, terms: &[(f64, f64)]) -> Result<Self> {
+        let g_inf = check("g_inf", g_inf, g_inf > 0.0, "0 < g_inf < inf (Pa)")?;
+        let terms = normalise(terms, ("g_i", "0 <= g_i < inf (Pa)"), ("tau_i", TIME_RANGE))?;
+        Ok(Self { g_inf, terms })
+    }
+
+    /// Elastic shear, `G(t) = g_inf` (Pa), `0 < g_inf < inf`.
+    pub fn elastic(g_inf: f64) -> Result<Self> {
+        Self::new(g_inf, &[])
+    }
+
+    /// Relaxed (static) shear modulus `G(inf) = g_inf` (Pa).
+    pub fn g_inf(&self) -> f64 {
+        self.g_inf
+    }
+
+    /// The terms `(g_i` (Pa), `tau_i` (s)`)`, sorted by increasing `tau_i`, times distinct,
+    /// moduli positive.
+    pub fn terms(&self) -> &[(f64, f64)] {
+        &self.terms
+    }
+
+    /// Glassy (instantaneous) shear modulus `G(0) = g_inf + sum_i g_i` (Pa).
+    pub fn glassy(&self) -> f64 {
+        self.g_inf + self.terms.iter().map(|&(g, _)| g).sum::<f64>()
+    }
+
+    /// `G(t)` (Pa) at `t >= 0` (s).
+    pub fn relaxation(&self, t: f64) -> f64 {
+        series(self.g_inf, &self.terms, t)
+    }
+
+    /// True without terms (elastic shear).
+    pub fn is_elastic(&self) -> bool {
+        self.terms.is_empty()
+    }
+}
+
+/// Bulk relaxation `K(t) = k_inf + sum_j k_j exp(-t / theta_j)` (docs/theory.md §8), validated.
+///
+/// `k_inf` is the relaxed bulk modulus in Pa, `0 < k_inf < inf`; each term is a pair
+/// `(k_j, theta_j)`: modulus in Pa (`0 <= k_j < inf`) and time in s (`0 < theta_j < inf`).
+/// At least one term must be given (an elastic bulk is [`BulkRheology::Elastic`]); terms are
+/// normalised like those of [`ShearProny`], and if every modulus is zero the series is refused.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BulkProny {
+    k_inf: f64,
+    terms: Vec<(f64, f64)>,
+}
+
+impl BulkProny {
+    /// Validated bulk series from `k_inf` (Pa) and the pairs `(k_j` (Pa), `theta_j` (s)`)`.
+    pub fn new(k_inf: f64, terms: &[(f64, f64)]) -> Result<Self> {
+        let k_inf = check("k_inf", k_inf, k_inf > 0.0, "0 < k_inf < inf (Pa)")?;
+        let terms = normalise(
+            terms,
+            ("k_j", "0 <= k_j < inf (Pa)"),
+            ("theta_j", TIME_RANGE),
+        )?;
+        if terms.is_empty() {
+            return Err(Error::OutOfRange {
+                field: "k_j",
+                value: 0.0,
+                allowed: "a bulk Prony series with at least one term of positive modulus \
+                          (an elastic bulk is BulkRheology::Elastic)",
+            });
+        }
+        Ok(Self { k_inf, terms })
+    }
+
+    /// Relaxed bulk modulus `K(inf) = k_inf` (Pa).
+    pub fn k_inf(&self) -> f64 {
+        self.k_inf
+    }
+
+    /// The terms `(k_j` (Pa), `theta_j` (s)`)`, sorted by increasing `theta_j`, times distinct,
+    /// moduli positive, never empty.
+    pub fn terms(&self) -> &[(f64, f64)] {
+        &self.terms
+    }
+
+    /// Glassy bulk modulus `K(0) = k_inf + sum_j k_j` (Pa).
+    pub fn glassy(&self) -> f64 {
+        self.k_inf + self.terms.iter().map(|&(k, _)| k).sum::<f64>()
+    }
+
+    /// `K(t)` (Pa) at `t >= 0` (s).
+    pub fn relaxation(&self, t: f64) -> f64 {
+        series(self.k_inf, &self.terms, t)
+    }
+}
+
+/// Bulk behaviour of a [`GeneralMaterial`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum BulkRheology {
+    /// `K = inf` (static Poisson ratio 0.5): then `G_eq = G`.
+    Incompressible,
+    /// Elastic bulk modulus `K_0` in Pa, `0 < K_0 < inf`.
+    Elastic(f64),
+    /// Static Poisson ratio `nu`, `-1 < nu <= 0.5`, turned by [`GeneralMaterial::new`] into the
+    /// elastic bulk `K_0 = 2 g_inf (1 + nu) / (3 (1 - 2 nu))` of paper Eq. (3) with the relaxed
+    /// shear modulus (or [`BulkRheology::Incompressible`] for `nu = 0.5`).
+    Poisson(f64),
+    /// Viscoelastic bulk, a [`BulkProny`].
+    Prony(BulkProny),
+}
+
+/// A linear-viscoelastic solid: shear [`ShearProny`] and bulk [`BulkRheology`] (docs/theory.md §8).
+///
+/// After construction the bulk is never [`BulkRheology::Poisson`] (it is resolved to an elastic
+/// or incompressible bulk).
+#[derive(Debug, Clone, PartialEq)]
+pub struct GeneralMaterial {
+    shear: ShearProny,
+    bulk: BulkRheology,
+}
+
+impl GeneralMaterial {
+    /// Material from its shear series and bulk; checks `K_0` (`0 < K_0 < inf`, field `"k_0"`)
+    /// and the Poisson ratio (`-1 < nu <= 0.5` with a finite positive `K_0`, field `"nu"`).
+    ///
+    /// ```
+    /// # use mdr_impact::model::material::rheology::{BulkRheology, GeneralMaterial, ShearProny};
+    /// let shear = ShearProny::new(1.0, &[(99.0, 1.0)]).unwrap();
+    /// let m = GeneralMaterial::new(shear, BulkRheology::Poisson(0.3)).unwrap();
+    /// // K_0 = 2 (1 + nu) / (3 (1 - 2 nu)) = 2.6 / 1.2 with g_inf = 1 (paper Eq. 3)
+    /// let BulkRheology::Elastic(k) = m.bulk() else { panic!() };
+    /// assert!((k - 2.6 / 1.2).abs() < 1e-15 * k);
+    /// ```
+    pub fn new(shear: ShearProny, bulk: BulkRheology) -> Result<Self> {
+        let bulk = match bulk {
+            BulkRheology::Elastic(k) => {
+                BulkRheology::Elastic(check("k_0", k, k > 0.0, "0 < k_0 < inf (Pa)")?)
+            }
+            BulkRheology::Poisson(nu) => {
+                check("nu", nu, nu > -1.0 && nu <= 0.5, "-1 < nu <= 0.5")?;
+                if nu == 0.5 {
+                    BulkRheology::Incompressible
+                } else {
+                    let k = 2.0 * shear.g_inf * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu));
+                    if !(k.is_finite() && k > 0.0) {
+                        return Err(Error::OutOfRange {
+                            field: "nu",
+                            value: nu,
+                            allowed: "-1 < nu <= 0.5 with K_0 = 2 g_inf (1 + nu) / (3 (1 - 2 nu)) \
+                                      finite and > 0",
+                        });
+                    }
+                    BulkRheology::Elastic(k)
+                }
+            }
+            b => b,
+        };
+        Ok(Self { shear, bulk })
+    }
+
+    /// The shear relaxation.
+    pub fn shear(&self) -> &ShearProny {
+        &self.shear
+    }
+
+    /// The bulk (never [`BulkRheology::Poisson`]).
+    pub fn bulk(&self) -> &BulkRheology {
+        &self.bulk
+    }
+
+    /// Relaxed bulk modulus `K(inf)` (Pa), `inf` when incompressible.
+    pub fn bulk_relaxed(&self) -> f64 {
+        match &self.bulk {
+            BulkRheology::Incompressible | BulkRheology::Poisson(_) => f64::INFINITY,
+            BulkRheology::Elastic(k) => *k,
+            BulkRheology::Prony(p) => p.k_inf,
+        }
+    }
+
+    /// Glassy bulk modulus `K(0)` (Pa), `inf` when incompressible.
+    pub fn bulk_glassy(&self) -> f64 {
+        match &self.bulk {
+            BulkRheology::Prony(p) => p.glassy(),
+            _ => self.bulk_relaxed(),
+        }
+    }
+
+    /// `K(t)` (Pa) at `t >= 0` (s), `inf` when incompressible.
+    pub fn bulk_relaxation(&self, t: f64) -> f64 {
+        match &self.bulk {
+            BulkRheology::Prony(p) => p.relaxation(t),
+            _ => self.bulk_relaxed(),
+        }
+    }
+
+    /// Relaxed equivalent modulus `G_eq(t -> inf) = G (3K + G) / (3K + 4G)` with the relaxed
+    /// `G = g_inf`, `K = k_inf` (Pa; docs/theory.md §2 and §8). Equals `g_inf` when incompressible.
+    pub fn equivalent_relaxed(&self) -> f64 {
+        equivalent_elastic(self.shear.g_inf, self.bulk_relaxed())
+    }
+
+    /// Glassy equivalent modulus `G_eq(0) = G_0 (3K_0 + G_0) / (3K_0 + 4G_0)` with the glassy
+    /// moduli `G_0 = G(0)`, `K_0 = K(0)` (Pa; docs/theory.md §2 and §8).
+    pub fn equivalent_glassy(&self) -> f64 {
+        equivalent_elastic(self.shear.glassy(), self.bulk_glassy())
+    }
+}
+
+impl From<&Material> for GeneralMaterial {
+    /// The standard solid as the one-term case: `g_inf = G_inf`, one term `(G_1, eta / G_1)`
+    /// (none when the material is elastic: `G_1 = 0` or `eta = 0`), bulk `K_0` or incompressible.
+    fn from(m: &Material) -> Self {
+        let terms = if m.is_elastic() {
+            Vec::new()
+        } else {
+            vec![(m.g_1(), m.tau())]
+        };
+        let bulk = match m.bulk() {
+            Bulk::Modulus(k) => BulkRheology::Elastic(k),
+            Bulk::Incompressible => BulkRheology::Incompressible,
+        };
+        Self {
+            shear: ShearProny {
+                g_inf: m.g_inf(),
+                terms,
+            },
+            bulk,
+        }
+    }
+}
+
+impl Material {
+    /// This standard solid as a [`GeneralMaterial`] (one shear term, elastic or incompressible
+    /// bulk); see [`GeneralMaterial::from`].
+    pub fn general(&self) -> GeneralMaterial {
+        GeneralMaterial::from(self)
+    }
+}
+
+/// `G (3K + G) / (3K + 4G)` (Pa) for elastic moduli `g`, `k` (Pa); `g` when `k = inf`.
+pub fn equivalent_elastic(g: f64, k: f64) -> f64 {
+    if k.is_infinite() {
+        g
+    } else {
+        g * (3.0 * k + g) / (3.0 * k + 4.0 * g)
+    }
+}
+
+const TIME_RANGE: &str = "0 < time < inf (s)";
+
+/// Validate, sort by time, merge equal times (moduli added), drop zero moduli.
+fn normalise(
+    terms: &[(f64, f64)],
+    (modulus, modulus_range): (&'static str, &'static str),
+    (time, time_range): (&'static str, &'static str),
+) -> Result<Vec<(f64, f64)>> {
+    for (index, &(m, t)) in terms.iter().enumerate() {
+        if !(m.is_finite() && m >= 0.0) {
+            return Err(Error::PronyTerm {
+                field: modulus,
+                index,
+                value: m,
+                allowed: modulus_range,
+            });
+        }
+        if !(t.is_finite() && t > 0.0) {
+            return Err(Error::PronyTerm {
+                field: time,
+                index,
+                value: t,
+                allowed: time_range,
+            });
+        }
+    }
+    let mut sorted = terms.to_vec();
+    sorted.sort_by(|a, b| a.1.total_cmp(&b.1));
+    let mut out: Vec<(f64, f64)> = Vec::with_capacity(sorted.len());
+    for (m, t) in sorted {
+        match out.last_mut() {
+            Some(last) if last.1 == t => last.0 += m,
+            _ => out.push((m, t)),
+        }
+    }
+    out.retain(|&(m, _)| m > 0.0);
+    // The sum of two finite moduli can overflow.
+    if let Some(&(m, _)) = out.iter().find(|&&(m, _)| !m.is_finite()) {
+        return Err(Error::OutOfRange {
+            field: modulus,
+            value: m,
+            allowed: "a finite sum of the moduli of terms with equal times",
+        });
+    }
+    Ok(out)
+}
+
+fn series(relaxed: f64, terms: &[(f64, f64)], t: f64) -> f64 {
+    relaxed
+        + terms
+            .iter()
+            .map(|&(m, tau)| m * (-t / tau).exp())
+            .sum::<f64>()
+}

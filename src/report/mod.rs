@@ -1,0 +1,9 @@
+//! Verification and reporting: the catalogue of cases, the `validate` runner and its
+//! VALIDATION.md writer, the work-precision bench, the stress run of the accuracy contract and the
+//! paper's figures.
+
+pub mod bench;
+pub mod catalogue;
+pub mod figures;
+pub mod stress;
+pub mod validate;

@@ -1,0 +1,898 @@
+//! The Method of Dimensionality Reduction (paper §3, Eqs. 4–9).
+//!
+//! The sphere's profile `f(r) = r^2/(2R)` maps to `g(x) = x^2/R` (Eq. 6). A one-dimensional
+//! foundation of independent viscoelastic elements at `x_i = (i + 1/2) dx`, `i = 0, 1, ...`
+//! (midpoints, each standing for the pair at `+-x_i`), carries `u_i = d - g(x_i)` while in
+//! contact (Eq. 7) and a force per pair `8 dx` times the hereditary response of the element of
+//! Eq. (8). Elements enter as the indentation reaches them during compression, leave when their
+//! force would turn negative (outermost first: last in, first out) and are never traced again.
+//! The sphere obeys `m d'' = -F` (Eq. 9).
+//!
+//! Two time schemes: [`Scheme::Euler`] (the paper's explicit Euler on the network of Eq. 8,
+//! standard solid only) and [`Scheme::Exponential`] (exact exponential update of the Prony
+//! internal variables, trapezoidal rule for the sphere: unconditionally stable, second order),
+//! on the standard solid's `G_eq` or on a general material's element network built from `G` and
+//! `K` ([`crate::model::material::GeneralNetwork`], module `network`). Both work in canonical units
+//! (`m = R = v0 = G_inf = 1`, see [`crate::model::impact`]); [`indent`] drives the foundation with a
+//! prescribed indentation instead.
+
+pub(crate) mod euler;
+pub(crate) mod exponential;
+pub mod indent;
+pub(crate) mod network;
+
+use crate::error::{Error, Result};
+use crate::model::impact::{History, Outcome, Work};
+use crate::model::material::{ElementModel, ElementNetwork, GeneralNetwork, Prony, StackedNetwork};
+use crate::model::tolerances;
+use euler::EulerFoundation;
+use exponential::ExpFoundation;
+use network::NetFoundation;
+
+/// Element positions of the foundation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Foundation {
+    dx: f64,
+    inv_radius: f64,
+    capacity: usize,
+}
+
+impl Foundation {
+    /// Foundation with spacing `dx` (m) for a sphere of radius `radius` (m), with at most
+    /// `capacity` elements.
+    pub fn new(dx: f64, radius: f64, capacity: usize) -> Self {
+        Self {
+            dx,
+            inv_radius: 1.0 / radius,
+            capacity,
+        }
+    }
+    /// Equivalent profile at element `i`: `g(x_i) = x_i^2 / R`, `x_i = (i + 1/2) dx`.
+    #[inline]
+    pub fn g(&self, i: usize) -> f64 {
+        let x = (i as f64 + 0.5) * self.dx;
+        x * x * self.inv_radius
+    }
+    /// Force weight of one element pair, `2 * 4 dx`.
+    #[inline]
+    pub fn weight(&self) -> f64 {
+        8.0 * self.dx
+    }
+    /// Element spacing (m).
+    pub fn dx(&self) -> f64 {
+        self.dx
+    }
+    /// Maximum element count.
+    pub fn capacity(&self) -> usize {
+        self.capacity
+    }
+    /// Contact radius represented by `n` elements in contact: the outer cell edge `n dx`.
+    pub fn radius_of(&self, n: usize) -> f64 {
+        n as f64 * self.dx
+    }
+}
+
+/// MDR time scheme.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scheme {
+    /// The paper's explicit Euler on the element network of Eq. (8).
+    Euler,
+    /// Exact exponential update of the internal variables, trapezoidal rule for the sphere.
+    Exponential,
+}
+
+impl Scheme {
+    /// Solver name of the scheme.
+    pub fn name(self) -> &'static str {
+        match self {
+            Scheme::Euler => "mdr-euler",
+            Scheme::Exponential => "mdr",
+        }
+    }
+    /// Observed order of the scheme in the time step (asymptotic).
+    pub fn time_order(self) -> f64 {
+        match self {
+            Scheme::Euler => 1.0,
+            Scheme::Exponential => 2.0,
+        }
+    }
+}
+
+/// The material of a canonical problem in the two forms the schemes need.
+#[derive(Debug, Clone)]
+pub struct CanonicalMaterial {
+    /// Equivalent relaxation function (moduli / `G_inf`, times / time scale).
+    pub prony: Prony,
+    /// The element network in the same units.
+    pub network: Network,
+}
+
+/// The element network of a canonical material.
+#[derive(Debug, Clone)]
+pub enum Network {
+    /// The standard solid's network of Eq. (8). [`Scheme::Exponential`] integrates the
+    /// standard solid through its closed-form `G_eq` ([`CanonicalMaterial::prony`]) and
+    /// [`Scheme::Euler`] through this network.
+    StandardSolid(ElementNetwork),
+    /// A general material's network built from `G` and `K` ([`GeneralNetwork`]), which both
+    /// schemes integrate ([`Scheme::Euler`] on its dashpot positions).
+    General(GeneralNetwork),
+    /// Two colliding bodies' networks in series ([`StackedNetwork`], docs/theory.md §8), never
+    /// combined into `G_tot`; [`Scheme::Exponential`] integrates it, [`Scheme::Euler`] refuses it.
+    Stacked(StackedNetwork),
+}
+
+/// The one-line refusal of [`Scheme::Euler`] for two viscoelastic bodies.
+pub const EULER_GENERAL_UNSUPPORTED: &str = "mdr-euler: the paper's explicit Euler runs on one \
+     body's element network; use mdr, fast or reference for two viscoelastic bodies";
+
+/// The step interface of the exponential scheme's foundations: the standard solid's through
+/// `G_eq` ([`ExpFoundation`]) and the general network ([`NetFoundation`]).
+pub(crate) trait Stepper {
+    /// Set the step size.
+    fn set_step(&mut self, dt: f64);
+    /// Force over the current contact set at depth `d` with the current states.
+    fn force_now(&self, d: f64) -> f64;
+    /// End-of-step force over the current contact set, affine in the rate `r`.
+    fn affine(&self, d: f64) -> exponential::Affine;
+    /// End-of-step force and `df/dr` of the elements entering during a step at rate `r > 0`.
+    fn entering(&self, d: f64, r: f64) -> (f64, f64);
+    /// End-of-step force (per `8 dx`) of the outermost element in contact, if any.
+    fn outer_force(&self, d: f64, r: f64) -> Option<f64>;
+    /// Force (per `8 dx`) of the outermost element with the current states.
+    fn outer_force_start(&self, d: f64) -> f64;
+    /// Affine contribution of the outermost element.
+    fn outer_affine(&self, d: f64) -> exponential::Affine;
+    /// Remove the outermost element.
+    fn pop(&mut self);
+    /// Advance all elements by one step at rate `r` from depth `d` (admitting entering ones).
+    fn commit(&mut self, d: f64, r: f64, admit: bool);
+    /// Elements in contact.
+    fn in_contact(&self) -> usize;
+    /// Element positions.
+    fn geometry(&self) -> &Foundation;
+    /// `(maximum elements in contact, element updates)`.
+    fn counters(&self) -> (usize, u64);
+}
+
+impl Stepper for ExpFoundation {
+    fn set_step(&mut self, dt: f64) {
+        ExpFoundation::set_step(self, dt)
+    }
+    fn force_now(&self, d: f64) -> f64 {
+        ExpFoundation::force_now(self, d)
+    }
+    fn affine(&self, d: f64) -> exponential::Affine {
+        ExpFoundation::affine(self, d)
+    }
+    fn entering(&self, d: f64, r: f64) -> (f64, f64) {
+        ExpFoundation::entering(self, d, r)
+    }
+    fn outer_force(&self, d: f64, r: f64) -> Option<f64> {
+        ExpFoundation::outer_force(self, d, r)
+    }
+    fn outer_force_start(&self, d: f64) -> f64 {
+        ExpFoundation::outer_force_start(self, d)
+    }
+    fn outer_affine(&self, d: f64) -> exponential::Affine {
+        ExpFoundation::outer_affine(self, d)
+    }
+    fn pop(&mut self) {
+        ExpFoundation::pop(self)
+    }
+    fn commit(&mut self, d: f64, r: f64, admit: bool) {
+        ExpFoundation::commit(self, d, r, admit)
+    }
+    fn in_contact(&self) -> usize {
+        ExpFoundation::in_contact(self)
+    }
+    fn geometry(&self) -> &Foundation {
+        ExpFoundation::geometry(self)
+    }
+    fn counters(&self) -> (usize, u64) {
+        (self.max_elements, self.element_updates)
+    }
+}
+
+/// Characteristic sizes of an impact used to lay out the discretisation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Layout {
+    /// Estimated maximum contact radius (canonical).
+    pub contact_radius: f64,
+    /// Estimated time of maximum indentation (canonical).
+    pub compression_time: f64,
+    /// Estimated contact time (canonical).
+    pub contact_time: f64,
+}
+
+/// Discretisation of one MDR run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Grid {
+    /// Element spacing.
+    pub dx: f64,
+    /// Time step during compression.
+    pub dt_compression: f64,
+    /// Time step during restitution.
+    pub dt_restitution: f64,
+    /// Maximum number of steps before the run is declared not to end.
+    pub max_steps: u64,
+}
+
+impl Grid {
+    /// Step size of the current phase.
+    fn dt(&self, compression: bool) -> f64 {
+        if compression {
+            self.dt_compression
+        } else {
+            self.dt_restitution
+        }
+    }
+
+    /// Error when the time loop has used its step budget without the contact ending.
+    fn check_budget(&self, steps: u64, what: &'static str) -> Result<()> {
+        if steps >= self.max_steps {
+            Err(Error::NoConvergence {
+                what,
+                iterations: steps,
+            })
+        } else {
+            Ok(())
+        }
+    }
+
+    /// Grid with `elements` across the estimated contact radius and `steps` per estimated
+    /// contact time, split between the phases in proportion to their number of steps
+    /// (`steps / 2` each, so that a fast compression and a slow restitution are both resolved).
+    pub fn from_layout(layout: &Layout, elements: usize, steps: usize) -> Self {
+        let half = (steps as f64 / 2.0).max(2.0);
+        let tr = (layout.contact_time - layout.compression_time).max(0.05 * layout.contact_time);
+        Grid {
+            dx: layout.contact_radius / elements as f64,
+            dt_compression: layout.compression_time / half,
+            dt_restitution: tr / half,
+            max_steps: 20 * steps as u64 + 1000,
+        }
+    }
+}
+
+/// Hard work limits of the MDR solvers.
+fn capacity_for(dx: f64, contact_radius: f64) -> usize {
+    ((4.0 * contact_radius / dx).ceil() as usize + 16).min(tolerances::MDR_MAX_ELEMENTS)
+}
+
+/// Running maxima and events shared by the schemes.
+#[derive(Debug, Default, Clone)]
+struct Tracker {
+    max_force: f64,
+    prev: [(f64, f64); 2],
+    count: usize,
+    t_max_d: Option<f64>,
+    d_max: f64,
+}
+
+impl Tracker {
+    fn sample_force(&mut self, t: f64, f: f64) {
+        if self.count >= 2 {
+            let (t0, f0) = self.prev[0];
+            let (t1, f1) = self.prev[1];
+            if f1 >= f0 && f1 > f && f1 >= self.max_force {
+                self.max_force = parabola_peak(t0, f0, t1, f1, t, f).max(f1);
+            }
+        }
+        if f > self.max_force {
+            self.max_force = f;
+        }
+        self.prev = [self.prev[1], (t, f)];
+        self.count += 1;
+    }
+    /// Detect `v` crossing zero over a step and record the interpolated maximum indentation.
+    fn sample_turn(&mut self, t: f64, dt: f64, d: f64, v: f64, v1: f64) {
+        if self.t_max_d.is_none() && v > 0.0 && v1 <= 0.0 {
+            let s = dt * v / (v - v1);
+            self.t_max_d = Some(t + s);
+            self.d_max = d + 0.5 * v * s;
+        }
+    }
+}
+
+/// A history buffer with the initial state (`d = 0`, `v = 1`), if requested.
+fn start_history(history: bool) -> Option<History> {
+    history.then(|| {
+        let mut h = History::default();
+        h.push(0.0, 0.0, 1.0, 0.0, 0.0);
+        h
+    })
+}
+
+/// Peak of the parabola through three points (the middle one the largest).
+fn parabola_peak(t0: f64, f0: f64, t1: f64, f1: f64, t2: f64, f2: f64) -> f64 {
+    let d01 = (f1 - f0) / (t1 - t0);
+    let d12 = (f2 - f1) / (t2 - t1);
+    let c = (d12 - d01) / (t2 - t0);
+    if !(c < 0.0) {
+        return f1;
+    }
+    // f(t) = f1 + b (t - t1) + c (t - t1)^2 with b the slope at t1
+    let b = d01 + c * (t1 - t0);
+    f1 - b * b / (4.0 * c)
+}
+
+/// Run one impact with the exponential scheme on a fixed grid (canonical units).
+pub fn run_exponential(
+    prony: &Prony,
+    grid: &Grid,
+    capacity: usize,
+    history: bool,
+) -> Result<Outcome> {
+    let geom = Foundation::new(grid.dx, 1.0, capacity);
+    run_stepper(ExpFoundation::new(geom, prony), grid, capacity, history)
+}
+
+/// Run one impact with the exponential scheme on the element network of a general material
+/// (built from `G` and `K`, not from `G_eq`) on a fixed grid (canonical units).
+pub fn run_network<N: ElementModel>(
+    network: &N,
+    grid: &Grid,
+    capacity: usize,
+    history: bool,
+) -> Result<Outcome> {
+    let geom = Foundation::new(grid.dx, 1.0, capacity);
+    run_stepper(
+        NetFoundation::new(geom, network.clone()),
+        grid,
+        capacity,
+        history,
+    )
+}
+
+/// The exponential scheme's time loop over a foundation.
+fn run_stepper<F: Stepper>(
+    mut f: F,
+    grid: &Grid,
+    capacity: usize,
+    history: bool,
+) -> Result<Outcome> {
+    let (mut t, mut d, mut v, mut force) = (0.0_f64, 0.0_f64, 1.0_f64, 0.0_f64);
+    let mut hist = start_history(history);
+    let mut tr = Tracker::default();
+    let mut compression = true;
+    let mut steps = 0u64;
+    let t_end;
+    loop {
+        grid.check_budget(steps, "mdr time loop (contact did not end)")?;
+        let dt = grid.dt(compression);
+        f.set_step(dt);
+        let mut aff = f.affine(d);
+        let q = 0.25 * dt; // trapezoidal: r = v - dt (F_n + F_{n+1}) / (4 m)
+        let solve_fixed = |aff: &exponential::Affine| (v - q * (force + aff.a)) / (1.0 + q * aff.b);
+        let mut r = solve_fixed(&aff);
+        let admit = compression && r > 0.0;
+        if admit {
+            r = solve_with_entering(&f, d, v, force, q, aff, r)?;
+            if d + r * dt > f.geometry().g(capacity - 1) {
+                return Err(Error::WorkLimit {
+                    solver: "mdr",
+                    what: "elements",
+                    needed: capacity as u64 + 1,
+                    limit: capacity as u64,
+                });
+            }
+        }
+        let mut ended_at = None;
+        if r < 0.0 {
+            // exits, outermost first, until the outermost element carries a non-negative force
+            while let Some(fo) = f.outer_force(d, r) {
+                if fo >= 0.0 {
+                    break;
+                }
+                let start = f.outer_force_start(d);
+                let sub = f.outer_affine(d);
+                aff.a -= sub.a;
+                aff.b -= sub.b;
+                f.pop();
+                compression = false;
+                r = solve_fixed(&aff);
+                if f.in_contact() == 0 {
+                    ended_at = Some(t + dt * start / (start - fo));
+                }
+            }
+        }
+        f.commit(d, r, admit);
+        let d1 = d + r * dt;
+        let v1 = 2.0 * r - v;
+        let f1 = f.force_now(d1);
+        tr.sample_turn(t, dt, d, v, v1);
+        if v1 <= 0.0 && compression {
+            // past the turning point: the restitution step size from now on
+            compression = false;
+        }
+        t += dt;
+        steps += 1;
+        d = d1;
+        v = v1;
+        force = f1;
+        tr.sample_force(t, force);
+        if let Some(h) = hist.as_mut() {
+            h.push(t, d, v, force, f.geometry().radius_of(f.in_contact()));
+        }
+        if let Some(te) = ended_at {
+            t_end = te;
+            break;
+        }
+        if !(d.is_finite() && v.is_finite() && force.is_finite()) {
+            return Err(Error::NonFinite {
+                what: "mdr state",
+                value: d + v + force,
+            });
+        }
+    }
+    let (max_elements, element_updates) = f.counters();
+    Ok(finish(
+        "mdr",
+        v,
+        t_end,
+        &tr,
+        hist,
+        (steps, max_elements, element_updates),
+    ))
+}
+
+/// Solve `phi(r) = r - v + q (F_n + F_{n+1}(r)) = 0` with entering elements: `phi` is
+/// continuous and increasing, with a root in `(0, r_fixed]`. Safeguarded Newton.
+fn solve_with_entering<F: Stepper>(
+    f: &F,
+    d: f64,
+    v: f64,
+    force: f64,
+    q: f64,
+    aff: exponential::Affine,
+    r_fixed: f64,
+) -> Result<f64> {
+    let phi = |r: f64| {
+        let (fe, dfe) = f.entering(d, r);
+        (
+            r - v + q * (force + aff.a + aff.b * r + fe),
+            1.0 + q * (aff.b + dfe),
+        )
+    };
+    let (mut lo, mut hi) = (0.0, r_fixed);
+    let (p_hi, _) = phi(hi);
+    if p_hi <= 0.0 {
+        return Ok(hi);
+    }
+    let mut r = hi;
+    for _ in 0..tolerances::ROOT_MAX_ITER {
+        let (p, dp) = phi(r);
+        if p > 0.0 {
+            hi = r;
+        } else {
+            lo = r;
+        }
+        let mut next = r - p / dp;
+        if !(next > lo && next < hi) {
+            next = 0.5 * (lo + hi);
+        }
+        if (next - r).abs() <= 1e-15 * r.abs().max(1e-300) || hi - lo <= 1e-15 * hi {
+            return Ok(next);
+        }
+        r = next;
+    }
+    Err(Error::NoConvergence {
+        what: "mdr implicit step with entering elements",
+        iterations: tolerances::ROOT_MAX_ITER as u64,
+    })
+}
+
+/// Run one impact with the paper's explicit Euler on a fixed grid (canonical units): the
+/// standard solid's network of Eq. (8), or a general material's network from G and K with its
+/// dashpot positions as states (two bodies' stacked networks are refused).
+pub fn run_euler(
+    material: &CanonicalMaterial,
+    grid: &Grid,
+    capacity: usize,
+    history: bool,
+) -> Result<Outcome> {
+    let geom = Foundation::new(grid.dx, 1.0, capacity);
+    match &material.network {
+        Network::StandardSolid(n) => {
+            euler_loop(EulerFoundation::new(geom, *n), grid, capacity, history)
+        }
+        Network::General(n) => euler_loop(
+            EulerFoundation::new(geom, n.clone()),
+            grid,
+            capacity,
+            history,
+        ),
+        Network::Stacked(_) => Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string())),
+    }
+}
+
+fn euler_loop<N: euler::Dashpots>(
+    mut f: EulerFoundation<N>,
+    grid: &Grid,
+    capacity: usize,
+    history: bool,
+) -> Result<Outcome> {
+    let (mut t, mut d, mut v) = (0.0_f64, 0.0_f64, 1.0_f64);
+    let mut hist = start_history(history);
+    let mut tr = Tracker::default();
+    let mut compression = true;
+    let mut steps = 0u64;
+    let t_end;
+    loop {
+        grid.check_budget(steps, "mdr-euler time loop (contact did not end)")?;
+        let dt = grid.dt(compression);
+        let force = f.force_and_advance(d, dt);
+        let v1 = v - dt * force;
+        let d1 = d + dt * v1;
+        tr.sample_turn(t, dt, d, v, v1);
+        let mut ended_at = None;
+        if v1 > 0.0 && compression {
+            f.admit(d1);
+            if f.in_contact() == capacity {
+                return Err(Error::WorkLimit {
+                    solver: "mdr-euler",
+                    what: "elements",
+                    needed: capacity as u64 + 1,
+                    limit: capacity as u64,
+                });
+            }
+        } else {
+            compression = false;
+            // force of the outermost element at the start of the step, for the end-time estimate
+            while let Some(fo) = f.outer_force(d1) {
+                if fo >= 0.0 {
+                    break;
+                }
+                f.pop();
+                if f.in_contact() == 0 {
+                    ended_at = Some(t + dt);
+                }
+            }
+        }
+        t += dt;
+        steps += 1;
+        d = d1;
+        v = v1;
+        let f1 = if ended_at.is_some() { 0.0 } else { f.force(d) };
+        tr.sample_force(t, f1.max(force));
+        if let Some(h) = hist.as_mut() {
+            h.push(t, d, v, f1, f.geometry().radius_of(f.in_contact()));
+        }
+        if let Some(te) = ended_at {
+            t_end = te;
+            break;
+        }
+        if !(d.is_finite() && v.is_finite() && f1.is_finite()) || v.abs() > 1e6 {
+            return Err(Error::NonFinite {
+                what: "mdr-euler state (explicit Euler unstable)",
+                value: v,
+            });
+        }
+    }
+    Ok(finish(
+        "mdr-euler",
+        v,
+        t_end,
+        &tr,
+        hist,
+        (steps, f.max_elements, f.element_updates),
+    ))
+}
+
+fn finish(
+    solver: &'static str,
+    v_end: f64,
+    t_end: f64,
+    tr: &Tracker,
+    history: Option<History>,
+    (steps, elements, element_updates): (u64, usize, u64),
+) -> Outcome {
+    let cor = -v_end;
+    Outcome {
+        cor,
+        rebound_velocity: -v_end,
+        contact_time: t_end,
+        max_indentation: tr.d_max,
+        time_of_max_indentation: tr.t_max_d.unwrap_or(f64::NAN),
+        max_force: tr.max_force,
+        max_contact_radius: tr.d_max.sqrt(),
+        dissipated_energy: 0.5 * (1.0 - cor * cor),
+        cor_error_estimate: None,
+        history,
+        work: Work {
+            steps,
+            elements: elements as u64,
+            element_updates,
+            evaluations: 0,
+            levels: 1,
+        },
+        solver,
+        fallback: None,
+    }
+}
+
+/// Stability bound of the explicit Euler step (canonical units): `min(2 tau, 2/omega)`.
+pub fn euler_step_bound(prony: &Prony, contact_radius: f64) -> f64 {
+    let relax = 2.0 * prony.min_tau();
+    let omega = (8.0 * prony.glassy() * contact_radius).sqrt();
+    relax.min(2.0 / omega)
+}
+
+/// Estimate the layout of an impact with coarse exponential-MDR runs, restarting with a
+/// rescaled grid when the first guess (the glassy Hertz impact) was far off.
+pub fn pilot(prony: &Prony) -> Result<Layout> {
+    pilot_with(prony.glassy(), |grid, capacity| {
+        run_exponential(prony, grid, capacity, false)
+    })
+}
+
+/// [`pilot`] for a canonical material: a general material's layout comes from coarse runs of
+/// its own network (glassy modulus from the network's instantaneous stiffness), the standard
+/// solid's from [`pilot`] on its `G_eq`.
+pub fn pilot_material(material: &CanonicalMaterial) -> Result<Layout> {
+    match &material.network {
+        Network::General(net) => pilot_with(net.entry_stiffness(0.0).0, |grid, capacity| {
+            run_network(net, grid, capacity, false)
+        }),
+        Network::Stacked(net) => pilot_with(net.entry_stiffness(0.0).0, |grid, capacity| {
+            run_network(net, grid, capacity, false)
+        }),
+        Network::StandardSolid(_) => pilot(&material.prony),
+    }
+}
+
+fn pilot_with(glassy: f64, run: impl Fn(&Grid, usize) -> Result<Outcome>) -> Result<Layout> {
+    // glassy Hertz: k = 16/3 G_eq(0), d = (5/(4k))^(2/5), a = sqrt(d), t_c = 2.943 d
+    let k = 16.0 / 3.0 * glassy;
+    let d = (1.25 / k).powf(0.4);
+    let mut layout = Layout {
+        contact_radius: d.sqrt(),
+        compression_time: 1.4716 * d,
+        contact_time: 2.9433 * d,
+    };
+    let (n, m) = (tolerances::PILOT_ELEMENTS, tolerances::PILOT_STEPS);
+    for _ in 0..tolerances::PILOT_MAX_RESTARTS {
+        let mut grid = Grid::from_layout(&layout, n, m);
+        grid.max_steps = 8 * m as u64;
+        match run(&grid, 8 * n) {
+            Ok(o) => {
+                let new = Layout {
+                    contact_radius: o.max_contact_radius,
+                    compression_time: o.time_of_max_indentation,
+                    contact_time: o.contact_time,
+                };
+                // The restitution of a nearly plastic impact (e ~ 1e-4) is a slow creep whose
+                // coarse estimate can flip between values: the layout is judged by the contact
+                // radius and the compression time, and the longer contact time is kept.
+                let off = (new.contact_radius / layout.contact_radius)
+                    .max(layout.contact_radius / new.contact_radius)
+                    .max(new.compression_time / layout.compression_time)
+                    .max(layout.compression_time / new.compression_time)
+                    .max(new.contact_time / layout.contact_time);
+                layout = Layout {
+                    contact_time: new.contact_time.max(layout.contact_time),
+                    ..new
+                };
+                if off < 2.0 {
+                    return Ok(layout);
+                }
+            }
+            Err(Error::WorkLimit { .. }) => {
+                layout.contact_radius *= 4.0;
+            }
+            Err(Error::NoConvergence { .. }) => {
+                layout.contact_time *= 8.0;
+                layout.compression_time *= 2.0;
+            }
+            Err(e) => return Err(e),
+        }
+    }
+    Err(Error::NoConvergence {
+        what: "mdr pilot run (layout estimate)",
+        iterations: tolerances::PILOT_MAX_RESTARTS as u64,
+    })
+}
+
+/// Run an MDR scheme on an explicit resolution (elements per contact radius, steps per contact
+/// time) laid out from `layout`.
+pub fn run_resolution(
+    scheme: Scheme,
+    material: &CanonicalMaterial,
+    layout: &Layout,
+    elements: usize,
+    steps: usize,
+    history: bool,
+) -> Result<Outcome> {
+    let grid = Grid::from_layout(layout, elements, steps);
+    let capacity = capacity_for(grid.dx, layout.contact_radius);
+    match (scheme, &material.network) {
+        (Scheme::Exponential, Network::General(net)) => run_network(net, &grid, capacity, history),
+        (Scheme::Exponential, Network::Stacked(net)) => run_network(net, &grid, capacity, history),
+        (Scheme::Exponential, Network::StandardSolid(_)) => {
+            run_exponential(&material.prony, &grid, capacity, history)
+        }
+        (Scheme::Euler, Network::Stacked(_)) => {
+            Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string()))
+        }
+        (Scheme::Euler, Network::StandardSolid(_) | Network::General(_)) => {
+            let bound = euler_step_bound(&material.prony, layout.contact_radius);
+            let dt = grid.dt_compression.max(grid.dt_restitution);
+            if dt > bound {
+                return Err(Error::UnstableStep {
+                    scheme: "mdr-euler",
+                    dt,
+                    bound,
+                });
+            }
+            run_euler(material, &grid, capacity, history)
+        }
+    }
+}
+
+/// Error estimate of the finest level from the signed CoR differences between successive
+/// levels, or `None` while the sequence does not look asymptotic.
+///
+/// The last three differences must share their sign and shrink by ratios between `sqrt 2` and
+/// `2^(p_max + 1)` (`p_max` the scheme's order): MDR sequences have pre-asymptotic plateaus and
+/// sign changes (the element sum and the contact-edge events interact), and a single small
+/// difference there is an accident, not convergence. The estimate is `delta_L / (2^p - 1)`
+/// with `p` the observed order `log2` of the last ratio, floored at 1 (where relaxation is fast
+/// against the impact the force density jumps at the contact edge and the element sum converges
+/// at first order only). When the last two differences are both below `tiny` / 100 the
+/// sequence is at round-off and the larger of them is the estimate.
+fn accept(deltas: &[f64], p_max: f64, tiny: f64) -> Option<f64> {
+    let n = deltas.len();
+    if n >= 2 && deltas[n - 1].abs().max(deltas[n - 2].abs()) <= 0.01 * tiny {
+        return Some(deltas[n - 1].abs().max(deltas[n - 2].abs()));
+    }
+    if n < 3 {
+        return None;
+    }
+    let (d0, d1, d2) = (deltas[n - 3], deltas[n - 2], deltas[n - 1]);
+    if d0.signum() != d1.signum() || d1.signum() != d2.signum() || d2 == 0.0 {
+        return None;
+    }
+    let p_max = p_max.max(1.0);
+    let (lo, hi) = (2f64.sqrt(), 2f64.powf(p_max + 1.0));
+    let (r1, r2) = (d0 / d1, d1 / d2);
+    if !(lo..=hi).contains(&r1) || !(lo..=hi).contains(&r2) {
+        return None;
+    }
+    let order = r2.log2().clamp(1.0, p_max);
+    Some(d2.abs() / (2f64.powf(order) - 1.0))
+}
+
+/// Solve an impact with an MDR scheme to a requested relative accuracy of the CoR.
+///
+/// Adaptive refinement from a pilot layout: each level doubles the steps per contact time
+/// (and, for the second-order [`Scheme::Exponential`], the elements; for [`Scheme::Euler`],
+/// the elements every other level, since its time error is first order). With `delta_L` the
+/// change of the CoR between levels, a level is accepted when the differences look asymptotic
+/// and the error estimate of `accept` (private, documented at its definition) is below `MDR_SAFETY * rtol |e|`.
+pub fn solve_rtol(
+    scheme: Scheme,
+    material: &CanonicalMaterial,
+    rtol: f64,
+    history: bool,
+    work_limit: u64,
+) -> Result<Outcome> {
+    if let (Scheme::Euler, Network::Stacked(_)) = (scheme, &material.network) {
+        return Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string()));
+    }
+    let layout = pilot_material(material)?;
+    let (mut n, mut m) = match scheme {
+        Scheme::Exponential => (tolerances::MDR_START_ELEMENTS, tolerances::MDR_START_STEPS),
+        Scheme::Euler => (
+            tolerances::MDR_START_ELEMENTS,
+            2 * tolerances::MDR_START_STEPS,
+        ),
+    };
+    if scheme == Scheme::Euler {
+        // respect the stability bound with a margin (the paper's choice of a small enough step)
+        let bound = euler_step_bound(&material.prony, layout.contact_radius);
+        let grid = Grid::from_layout(&layout, n, m);
+        let dt = grid.dt_compression.max(grid.dt_restitution);
+        if dt > 0.5 * bound {
+            m = ((m as f64) * dt / (0.5 * bound)).ceil() as usize;
+        }
+    }
+    let mut work = Work::default();
+    let mut prev: Option<f64> = None;
+    let mut deltas: Vec<f64> = Vec::new();
+    // the relative estimate of the last level when its sequence looked asymptotic
+    let mut asymptotic: Option<f64> = None;
+    let mut last_change = f64::INFINITY;
+    let refuse = |levels: u32, asymptotic: Option<f64>, last_change: f64| match asymptotic {
+        Some(estimate) => Error::AccuracyNotReached {
+            solver: scheme.name(),
+            rtol,
+            estimate,
+            required: tolerances::MDR_SAFETY * rtol,
+            levels,
+        },
+        None => Error::NotAsymptotic {
+            solver: scheme.name(),
+            rtol,
+            last_change,
+            levels,
+        },
+    };
+    // element updates of a level with `n` elements per contact radius and `m` steps
+    let level_work = |n: usize, m: usize| {
+        (capacity_for(layout.contact_radius / n as f64, layout.contact_radius) as u64 / 4)
+            .saturating_mul(m as u64 + 8)
+    };
+    let refine = |level: u32, n: usize, m: usize| match scheme {
+        Scheme::Exponential => (2 * n, 2 * m),
+        Scheme::Euler if level % 2 == 1 => (2 * n, 2 * m),
+        Scheme::Euler => (n, 2 * m),
+    };
+    for level in 0..tolerances::MDR_MAX_LEVELS {
+        let predicted = level_work(n, m);
+        if work.element_updates.saturating_add(predicted) > work_limit {
+            if level == 0 {
+                // the coarsest grid the stability bound allows is already over the limit
+                return Err(Error::WorkLimit {
+                    solver: scheme.name(),
+                    what: "element updates of the coarsest stable grid",
+                    needed: predicted,
+                    limit: work_limit,
+                });
+            }
+            return Err(refuse(level, asymptotic, last_change));
+        }
+        let mut o = run_resolution(scheme, material, &layout, n, m, history)?;
+        work.steps += o.work.steps;
+        work.element_updates += o.work.element_updates;
+        work.elements = work.elements.max(o.work.elements);
+        work.levels = level + 1;
+        if let Some(p) = prev {
+            deltas.push(o.cor - p);
+            let scale = o.cor.abs().max(1e-300);
+            last_change = (o.cor - p).abs() / scale;
+            asymptotic = None;
+            if let Some(est) = accept(&deltas, scheme.time_order(), rtol * scale) {
+                if est <= tolerances::MDR_SAFETY * rtol * scale {
+                    o.work = work;
+                    o.cor_error_estimate = Some(est / scale);
+                    return Ok(o);
+                }
+                asymptotic = Some(est / scale);
+                // the asymptotic rate tells how many more levels rtol needs: refuse now if
+                // their work is over the limit, instead of after it. The rate is taken at
+                // least at the scheme's order (error / 2^p per level), so that only a request
+                // out of reach even at full order is refused early (the observed rate can
+                // still be pre-asymptotic)
+                let k = deltas.len();
+                let observed = if k >= 2 {
+                    (deltas[k - 2] / deltas[k - 1]).abs()
+                } else {
+                    0.0
+                };
+                let rate = observed.max(2f64.powf(scheme.time_order()));
+                if rate > 1.0 {
+                    let more = ((est / (tolerances::MDR_SAFETY * rtol * scale)).ln() / rate.ln())
+                        .ceil()
+                        .clamp(1.0, f64::from(tolerances::MDR_MAX_LEVELS));
+                    let (mut nn, mut mm, mut needed) = (n, m, work.element_updates);
+                    for j in 0..more as u32 {
+                        (nn, mm) = refine(level + j, nn, mm);
+                        needed = needed.saturating_add(level_work(nn, mm));
+                    }
+                    if needed > work_limit {
+                        return Err(Error::WorkLimit {
+                            solver: scheme.name(),
+                            what: "element updates predicted to reach rtol",
+                            needed,
+                            limit: work_limit,
+                        });
+                    }
+                }
+            }
+        }
+        prev = Some(o.cor);
+        (n, m) = refine(level, n, m);
+    }
+    Err(refuse(tolerances::MDR_MAX_LEVELS, asymptotic, last_change))
+}
