@@ -8,29 +8,20 @@ use mdr_impact::model::material::{BulkRheology, GeneralMaterial, Material, Shear
 use mdr_impact::report::validate::fmt_err;
 use mdr_impact::{solve, Impact, Outcome, SolveOptions, SolverKind, Sphere};
 
+mod common;
+use common::rel_err;
+
 const RTOL: f64 = 1e-10;
 /// Hertz contact time over the maximum indentation (docs/theory.md §6).
 const HERTZ_TC: f64 = 2.943_275_184_324_704_7;
 
 fn fast(imp: &Impact) -> Outcome {
-    solve(
-        imp,
-        &SolveOptions {
-            solver: SolverKind::Fast,
-            rtol: RTOL,
-            ..Default::default()
-        },
-    )
-    .unwrap()
+    solve(imp, &SolveOptions::with(SolverKind::Fast, RTOL)).unwrap()
 }
 
 fn general(terms: &[(f64, f64)], bulk: BulkRheology) -> Impact {
     let m = GeneralMaterial::new(ShearProny::new(1.0, terms).unwrap(), bulk).unwrap();
     Impact::with_general(Sphere::new(1.0, 1.0).unwrap(), 1.0, m).unwrap()
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    (a - b) / b
 }
 
 /// Hertz contact time of the unit impact on `G_eq = g` (canonical units).
@@ -56,11 +47,16 @@ fn general_limits() {
     let standard = Material::with_poisson(1.0, 100.0, 1.0, 0.45).unwrap();
     let s = fast(&Impact::new(Sphere::new(1.0, 1.0).unwrap(), 1.0, standard).unwrap());
     let g = fast(&general(&[(100.0, 0.01)], BulkRheology::Poisson(0.45)));
-    line("one term = standard solid", "CoR", rel(g.cor, s.cor), 1e-12);
+    line(
+        "one term = standard solid",
+        "CoR",
+        rel_err(g.cor, s.cor),
+        1e-12,
+    );
     line(
         "one term = standard solid",
         "contact time",
-        rel(g.contact_time, s.contact_time),
+        rel_err(g.contact_time, s.contact_time),
         1e-9,
     );
 
@@ -76,7 +72,7 @@ fn general_limits() {
         line(
             what,
             "contact time / Hertz",
-            rel(o.contact_time, hertz_contact_time(modulus)),
+            rel_err(o.contact_time, hertz_contact_time(modulus)),
             1e-8,
         );
     }
@@ -87,7 +83,7 @@ fn general_limits() {
     line(
         "k_0 = 1e14 = incompressible",
         "CoR",
-        rel(stiff.cor, inc.cor),
+        rel_err(stiff.cor, inc.cor),
         1e-9,
     );
 
@@ -98,7 +94,7 @@ fn general_limits() {
         .collect();
     let whole = fast(&general(&terms, bulk.clone()));
     let split = fast(&general(&halves, bulk));
-    line("split halves", "CoR", rel(split.cor, whole.cor), 1e-12);
+    line("split halves", "CoR", rel_err(split.cor, whole.cor), 1e-12);
 
     insta::with_settings!({
         snapshot_path => concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"),

@@ -5,16 +5,11 @@
 //! `mdr-euler` refuses general materials with one line.
 
 use mdr_impact::model::material::rheology::{BulkProny, BulkRheology, GeneralMaterial, ShearProny};
-use mdr_impact::{solve, Error, Impact, Material, Resolution, SolveOptions, SolverKind, Sphere};
+use mdr_impact::{solve, Error, Impact, Material, Resolution, SolverKind, Sphere};
 use std::time::Instant;
 
-fn opts(solver: SolverKind, rtol: f64) -> SolveOptions {
-    SolveOptions {
-        solver,
-        rtol,
-        ..Default::default()
-    }
-}
+mod common;
+use common::opts;
 
 fn sphere() -> Sphere {
     Sphere::new(4.11e-3, 5.0e-3).unwrap()

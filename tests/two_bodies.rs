@@ -15,24 +15,14 @@ use mdr_impact::io::scene::Scene;
 use mdr_impact::model::material::{BulkProny, BulkRheology, GeneralMaterial, Material, ShearProny};
 use mdr_impact::report::validate::fmt_err;
 use mdr_impact::{
-    solve, Body, BodyMaterial, Error, Impact, Outcome, Side, SolveOptions, SolverKind, Sphere,
-    TwoBodies,
+    solve, Body, BodyMaterial, Error, Impact, Outcome, Side, SolverKind, Sphere, TwoBodies,
 };
 
-fn opts(solver: SolverKind, rtol: f64) -> SolveOptions {
-    SolveOptions {
-        solver,
-        rtol,
-        ..Default::default()
-    }
-}
+mod common;
+use common::{opts, rel_err};
 
 fn run(imp: &Impact, solver: SolverKind, rtol: f64) -> Outcome {
     solve(imp, &opts(solver, rtol)).unwrap()
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    (a - b) / b
 }
 
 fn elastomer() -> Material {
@@ -143,7 +133,7 @@ fn two_body_checks() {
         line(
             &format!("B x 1e8 stiffer ({})", solver.name()),
             "CoR",
-            rel(o2.cor, o1.cor),
+            rel_err(o2.cor, o1.cor),
             1e-7,
         );
     }
@@ -188,13 +178,13 @@ fn two_body_checks() {
             line(
                 &format!("identical bodies, {name} ({})", solver.name()),
                 "CoR",
-                rel(o2.cor, o1.cor),
+                rel_err(o2.cor, o1.cor),
                 bound,
             );
             line(
                 &format!("identical bodies, {name} ({})", solver.name()),
                 "contact time",
-                rel(o2.contact_time, o1.contact_time),
+                rel_err(o2.contact_time, o1.contact_time),
                 bound,
             );
         }
@@ -220,7 +210,7 @@ fn two_body_checks() {
         line(
             &format!("swap A and B ({})", solver.name()),
             "CoR",
-            rel(o2.cor, o1.cor),
+            rel_err(o2.cor, o1.cor),
             1e-12,
         );
         mixed.push((solver, o1));
@@ -232,20 +222,20 @@ fn two_body_checks() {
     line(
         "mixed pair: fast against reference",
         "CoR",
-        rel(cor(SolverKind::Fast), reference),
+        rel_err(cor(SolverKind::Fast), reference),
         2e-10,
     );
     line(
         "mixed pair: mdr (stacked networks) against reference",
         "CoR",
-        rel(cor(SolverKind::Mdr), reference),
+        rel_err(cor(SolverKind::Mdr), reference),
         1e-4,
     );
     let tight = run(&ab, SolverKind::Mdr, 1e-6);
     line(
         "mixed pair: mdr rtol 1e-6 against reference",
         "CoR",
-        rel(tight.cor, reference),
+        rel_err(tight.cor, reference),
         1e-6,
     );
 
@@ -455,7 +445,7 @@ fn catalogue_collisions_agree() {
             (SolverKind::Mdr, 1e-4),
         ] {
             let e = run(&imp, solver, rtol).cor;
-            let err = rel(e, truth).abs();
+            let err = rel_err(e, truth).abs();
             assert!(
                 err <= rtol + 1e-10,
                 "{} {} rtol {rtol:e}: {err:e}",
