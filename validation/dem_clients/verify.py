@@ -12,8 +12,9 @@ and compares both with the prediction.
 
 Bound: relative error <= 1e-4 for the CoR and the contact time. The contact time is counted in
 whole steps, so it carries up to one step, dt / t_c <= 2e-8 s / 0.9 ms = 2.2e-5; the CoR's
-time-step error is of the same order or smaller (velocity Verlet, the force continuous at both
-ends of the contact).
+time-step error is of the same order (velocity Verlet, the force continuous at both ends of the
+contact; observed up to 2e-5 for the CoR and 5e-5 for the contact time at e = 0.2, 10 m/s).
+A scene whose Young's modulus LIGGGHTS refuses (at or below 5 MPa) is run in LAMMPS only.
 
 Stdlib only. Usage (from the repository root, after `cargo build --release`):
 
@@ -37,6 +38,7 @@ import tempfile
 DT = 2e-8  # s, time step
 BOUND = 1e-4  # relative, CoR and contact time
 GAP = 1e-7  # m, initial gap between the surfaces
+LIGGGHTS_MIN_YOUNG = 5e6  # Pa, LIGGGHTS refuses Young's moduli at or below (src/dem.rs)
 DEFAULT_CASES = [
     "scenes/polymer_ball_on_steel.toml:0.5:5",
     "scenes/two_identical_spheres.toml:0.5:5",
@@ -209,7 +211,12 @@ def main():
             picks = [curve[0], curve[len(curve) // 2], curve[-1]]
             jobs = [("LAMMPS " + args.lammps_version, args.lmp, law, line)
                     for law, line in sorted(law_lines(lammps).items())]
-            jobs.append(("LIGGGHTS 3.8.0", args.liggghts, "constant", liggghts))
+            if hertz["young_modulus"] > LIGGGHTS_MIN_YOUNG:
+                jobs.append(("LIGGGHTS 3.8.0", args.liggghts, "constant", liggghts))
+            else:
+                # the emitted file carries the warning; LIGGGHTS stops on it
+                print(f"{scene}: E = {hertz['young_modulus']:.4e} Pa is at or below LIGGGHTS's "
+                      f"limit {LIGGGHTS_MIN_YOUNG:.0e} Pa: LIGGGHTS skipped", file=sys.stderr)
             for code, binary, law, text in jobs:
                 for c in picks:
                     v0 = c["v0"]
