@@ -56,6 +56,14 @@
 //! `E = 2 (1 - nu^2) E* = 1.5 E*` with `nu = 0.5`, the equivalent incompressible solid, so that
 //! the codes' mixing returns our `E*` exactly. `nu` enters their tangential stiffness only,
 //! which a normal impact does not determine.
+//!
+//! # LAMMPS versions
+//! LAMMPS before [`LAMMPS_WALL_MIX_SINCE`] mixes a `fix wall/gran` wall as `E / (2 (1 - nu))`:
+//! the wall line then gets `E = 2 (1 - nu) E* = E*`. LAMMPS before
+//! [`LAMMPS_COEFF_RESTITUTION_SINCE`] has no `damping coeff_restitution`; its `damping tsuji`
+//! multiplies the same `sqrt(m F_ne / delta) delta'` by Marshall's polynomial of its input, so
+//! the constant-CoR law is written as `damping tsuji` with [`tsuji_input`]. Both were checked by
+//! running LAMMPS [`LAMMPS_PROVEN`] and LIGGGHTS 3.8.0 (`validation/dem_clients/verify.py`).
 
 use std::path::{Path, PathBuf};
 
