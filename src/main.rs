@@ -72,6 +72,10 @@ enum Command {
         /// modulus.
         #[arg(long, default_value = "relaxed")]
         modulus: String,
+        /// LAMMPS version YYYYMMDD (the date `lmp -h` prints) the lammps lines are for;
+        /// default: current LAMMPS.
+        #[arg(long)]
+        lammps_version: Option<String>,
         /// Output folder.
         #[arg(long, default_value = "out")]
         out: PathBuf,
@@ -385,6 +389,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             format,
             log,
             modulus,
+            lammps_version,
             out,
         } => {
             use mdr_impact::apps::dem;
@@ -394,7 +399,9 @@ fn run(cli: Cli) -> Result<(), Error> {
                 log,
                 dem::DEFAULT_VELOCITIES,
             )?;
-            let format = format.parse::<dem::Format>()?;
+            let format = format
+                .parse::<dem::Format>()?
+                .with_lammps_version(lammps_version.as_deref())?;
             let modulus = modulus.parse::<dem::ModulusChoice>()?;
             if out.as_os_str().is_empty() {
                 return Err(Error::EmptyPath { field: "--out" });

@@ -56,6 +56,14 @@
 //! `E = 2 (1 - nu^2) E* = 1.5 E*` with `nu = 0.5`, the equivalent incompressible solid, so that
 //! the codes' mixing returns our `E*` exactly. `nu` enters their tangential stiffness only,
 //! which a normal impact does not determine.
+//!
+//! # LAMMPS versions
+//! LAMMPS before [`LAMMPS_WALL_MIX_SINCE`] mixes a `fix wall/gran` wall as `E / (2 (1 - nu))`:
+//! the wall line then gets `E = 2 (1 - nu) E* = E*`. LAMMPS before
+//! [`LAMMPS_COEFF_RESTITUTION_SINCE`] has no `damping coeff_restitution`; its `damping tsuji`
+//! multiplies the same `sqrt(m F_ne / delta) delta'` by Marshall's polynomial of its input, so
+//! the constant-CoR law is written as `damping tsuji` with [`tsuji_input`]. Both were checked by
+//! running LAMMPS [`LAMMPS_PROVEN`] and LIGGGHTS 3.8.0 (`validation/dem_clients/verify.py`).
 
 use std::path::{Path, PathBuf};
 
@@ -106,8 +114,8 @@ const MAX_VISCO_C: f64 = 100.0;
 /// The output format of `mdr-impact dem`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Format {
-    /// LAMMPS `pair_style granular` / `fix wall/gran granular` lines.
-    Lammps,
+    /// LAMMPS `pair_style granular` / `fix wall/gran granular` lines for a LAMMPS version.
+    Lammps(LammpsVersion),
     /// LIGGGHTS `pair_style gran model hertz` lines with `fix property/global`.
     Liggghts,
     /// One JSON object.
@@ -118,7 +126,7 @@ impl std::str::FromStr for Format {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self> {
         match s {
-            "lammps" => Ok(Self::Lammps),
+            "lammps" => Ok(Self::Lammps(LammpsVersion::CURRENT)),
             "liggghts" => Ok(Self::Liggghts),
             "json" => Ok(Self::Json),
             other => Err(Error::Unsupported(format!(
@@ -126,6 +134,147 @@ impl std::str::FromStr for Format {
                 crate::error::escape_text(other)
             ))),
         }
+    }
+}
+
+impl Format {
+    /// The format with `--lammps-version YYYYMMDD` applied (`None`: current LAMMPS). A version
+    /// with a format other than `lammps` is an error.
+    pub fn with_lammps_version(self, version: Option<&str>) -> Result<Self> {
+        match (self, version) {
+            (_, None) => Ok(self),
+            (Self::Lammps(_), Some(v)) => Ok(Self::Lammps(v.parse()?)),
+            (_, Some(_)) => Err(Error::Unsupported(
+                "--lammps-version applies to --format lammps only".into(),
+            )),
+        }
+    }
+}
+
+/// First LAMMPS version (YYYYMMDD) whose `fix wall/gran granular hertz/material` mixes the
+/// wall's Young's modulus as `E / (2 (1 - nu^2))` (`GranSubMod::mix_stiffnessE_wall` of the
+/// granular-model classes, feature release 28 Mar 2023). Before it `fix_wall_gran.cpp` took
+/// `E / (2 (1 - nu))`: with our `E = 1.5 E*` and `nu = 0.5` a wall 1.5 times too stiff.
+pub const LAMMPS_WALL_MIX_SINCE: u32 = 20230328;
+
+/// First LAMMPS version (YYYYMMDD) with `damping coeff_restitution` (pull request 4068,
+/// feature release 17 Apr 2024). Before it the constant-CoR law is written as `damping tsuji`.
+pub const LAMMPS_COEFF_RESTITUTION_SINCE: u32 = 20240417;
+
+/// Oldest LAMMPS version (YYYYMMDD) the lines are written for: the stable release of
+/// 29 Sep 2021 (`limit_damping` and the granular walls' damping fixes are in it).
+pub const LAMMPS_OLDEST: u32 = 20210929;
+
+/// The LAMMPS version the verification (`validation/dem_clients/verify.py`) ran: Debian's
+/// package `lammps 20220106`, whose `lmp -h` prints "29 Sep 2021 - Update 2".
+pub const LAMMPS_PROVEN: u32 = 20220106;
+
+/// The LIGGGHTS version the verification ran (Debian's package `liggghts 3.8.0`).
+pub const LIGGGHTS_PROVEN: &str = "LIGGGHTS-PUBLIC 3.8.0";
+
+/// Coefficients of Marshall's (2009, Eq. 53) polynomial `alpha(e)` by which LAMMPS's
+/// `damping tsuji` turns its input `e` into the prefactor of `sqrt(m F_ne / delta) delta'`
+/// (lowest power first; no further factor before [`LAMMPS_COEFF_RESTITUTION_SINCE`], checked by
+/// running LAMMPS 20220106).
+pub const TSUJI_POLY: [f64; 7] = [1.2728, -4.2783, 11.087, -22.348, 27.467, -18.022, 4.8218];
+
+/// `alpha(e)` of LAMMPS's `damping tsuji` ([`TSUJI_POLY`]); it falls monotonically from 1.2728
+/// at `e = 0` to 3e-4 at `e = 1`.
+pub fn tsuji_alpha(e: f64) -> f64 {
+    TSUJI_POLY.iter().rev().fold(0.0, |acc, c| acc * e + c)
+}
+
+/// The `damping tsuji` input whose prefactor equals the constant-CoR law's `gamma`
+/// ([`cor_gamma`]), by bisection; `None` when `gamma` lies outside `alpha`'s range
+/// `[alpha(1), alpha(0)]`.
+pub fn tsuji_input(gamma: f64) -> Option<f64> {
+    if !(gamma >= tsuji_alpha(1.0) && gamma <= tsuji_alpha(0.0)) {
+        return None;
+    }
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    for _ in 0..crate::tolerances::ROOT_MAX_ITER {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if tsuji_alpha(mid) > gamma {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some(0.5 * (lo + hi))
+}
+
+/// The LAMMPS version the input lines are written for: the date `lmp -h` prints, as YYYYMMDD
+/// (`--lammps-version`), or the current LAMMPS.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LammpsVersion(Option<u32>);
+
+impl LammpsVersion {
+    /// Current LAMMPS (at least [`LAMMPS_COEFF_RESTITUTION_SINCE`]).
+    pub const CURRENT: Self = Self(None);
+
+    /// The date YYYYMMDD, `None` for the current version.
+    pub fn date(self) -> Option<u32> {
+        self.0
+    }
+
+    fn at_least(self, date: u32) -> bool {
+        self.0.map_or(true, |d| d >= date)
+    }
+
+    /// True when `fix wall/gran` mixes the wall's modulus as `E / (2 (1 - nu))` (before
+    /// [`LAMMPS_WALL_MIX_SINCE`]).
+    pub fn legacy_wall_modulus(self) -> bool {
+        !self.at_least(LAMMPS_WALL_MIX_SINCE)
+    }
+
+    /// True when `damping coeff_restitution` exists ([`LAMMPS_COEFF_RESTITUTION_SINCE`]).
+    pub fn has_coeff_restitution(self) -> bool {
+        self.at_least(LAMMPS_COEFF_RESTITUTION_SINCE)
+    }
+
+    /// True for the versions the verification ran (the same code as [`LAMMPS_PROVEN`]: before
+    /// [`LAMMPS_WALL_MIX_SINCE`]).
+    pub fn proven(self) -> bool {
+        self.legacy_wall_modulus()
+    }
+
+    /// `LAMMPS 20220106` or `current LAMMPS (20240417 or later)`.
+    pub fn label(self) -> String {
+        match self.0 {
+            Some(d) => format!("LAMMPS {d}"),
+            None => format!("current LAMMPS ({LAMMPS_COEFF_RESTITUTION_SINCE} or later)"),
+        }
+    }
+}
+
+impl std::str::FromStr for LammpsVersion {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self> {
+        let bad = |why: &str| {
+            Error::Unsupported(format!(
+                "--lammps-version = '{}': {why}",
+                crate::error::escape_text(s)
+            ))
+        };
+        if s.len() != 8 || !s.bytes().all(|b| b.is_ascii_digit()) {
+            return Err(bad(
+                "expected the date YYYYMMDD of `lmp -h` (e.g. 20220106 for 7 Jan 2022)",
+            ));
+        }
+        let d: u32 = s.parse().map_err(|_| bad("not a date"))?;
+        let (month, day) = (d / 100 % 100, d % 100);
+        if !(1..=12).contains(&month) || !(1..=31).contains(&day) {
+            return Err(bad("not a date YYYYMMDD"));
+        }
+        if d < LAMMPS_OLDEST {
+            return Err(bad(&format!(
+                "older than {LAMMPS_OLDEST}, the oldest LAMMPS these lines are written for"
+            )));
+        }
+        Ok(Self(Some(d)))
     }
 }
 
@@ -211,6 +360,12 @@ impl HertzContact {
     /// [`DEM_POISSON`], so that its mixing returns `E*`: `E = 2 (1 - nu^2) E*`.
     pub fn dem_young(&self) -> f64 {
         2.0 * (1.0 - DEM_POISSON * DEM_POISSON) * self.effective_modulus
+    }
+
+    /// Young's modulus (Pa) for a LAMMPS wall of a version that mixes the wall's modulus as
+    /// `E / (2 (1 - nu))` ([`LammpsVersion::legacy_wall_modulus`]): `E = 2 (1 - nu) E*`.
+    pub fn lammps_legacy_wall_young(&self) -> f64 {
+        2.0 * (1.0 - DEM_POISSON) * self.effective_modulus
     }
 
     /// `(k / m)^(2/5)` (s^(-2/5) m^(-1/5)), the scale of the viscoelastic law's coefficient.
@@ -952,10 +1107,19 @@ impl DemReport {
         s
     }
 
-    /// LAMMPS input lines: `pair_style granular` with `hertz/material` and both damping laws,
-    /// the better one active and the other commented out; `pair_coeff 1 2` for two particles,
-    /// `fix wall/gran granular` for a wall. The tangential model is a frictionless placeholder.
+    /// LAMMPS input lines for the current LAMMPS ([`Self::lammps_text_for`]).
     pub fn lammps_text(&self) -> String {
+        self.lammps_text_for(LammpsVersion::CURRENT)
+    }
+
+    /// LAMMPS input lines for `version`: `pair_style granular` with `hertz/material` and both
+    /// damping laws, the better one active and the other commented out; `pair_coeff 1 2` for two
+    /// particles, `fix wall/gran granular` for a wall. The tangential model is a frictionless
+    /// placeholder. Before [`LAMMPS_WALL_MIX_SINCE`] a wall gets
+    /// [`HertzContact::lammps_legacy_wall_young`]; before [`LAMMPS_COEFF_RESTITUTION_SINCE`]
+    /// the constant-CoR law is written as `damping tsuji` with [`tsuji_input`], or left out
+    /// with a note when no input gives it.
+    pub fn lammps_text_for(&self, version: LammpsVersion) -> String {
         let mut s = self.header(
             "#",
             &[
@@ -963,7 +1127,34 @@ impl DemReport {
                 "https://docs.lammps.org/fix_wall_gran.html",
             ],
         );
-        let young = self.contact.dem_young();
+        let legacy_wall = self.geometry == Geometry::Wall && version.legacy_wall_modulus();
+        let young = if legacy_wall {
+            self.contact.lammps_legacy_wall_young()
+        } else {
+            self.contact.dem_young()
+        };
+        s.push_str(&format!(
+            "# for {}; state yours with --lammps-version YYYYMMDD (the date `lmp -h` prints)\n",
+            version.label()
+        ));
+        if version.proven() {
+            s.push_str(&format!(
+                "# proven on LAMMPS {LAMMPS_PROVEN} (Debian lammps, `lmp -h`: 29 Sep 2021 - \
+                 Update 2) by validation/dem_clients/verify.py\n"
+            ));
+        } else {
+            s.push_str(&format!(
+                "# written from the LAMMPS sources, not run here; proven on LAMMPS \
+                 {LAMMPS_PROVEN} (--lammps-version {LAMMPS_PROVEN})\n"
+            ));
+        }
+        if legacy_wall {
+            s.push_str(&format!(
+                "# wall: this version's fix wall/gran takes E* = E / (2 (1 - nu)), so the wall \
+                 gets E = 2 (1 - nu) E* = {} Pa\n",
+                fmt_num(young)
+            ));
+        }
         let (head, tail) = match self.geometry {
             Geometry::Pair => ("pair_coeff 1 2 hertz/material".to_string(), String::new()),
             Geometry::Wall => (
@@ -972,16 +1163,38 @@ impl DemReport {
             ),
         };
         let tangential = "tangential linear_nohistory 0.0 0.0";
-        let constant = format!(
-            "{head} {} {} {DEM_POISSON} {tangential} damping coeff_restitution limit_damping{tail}",
-            fmt_num(young),
-            fmt_num(self.constant.cor_input)
-        );
-        let visco = format!(
-            "{head} {} {} {DEM_POISSON} {tangential} damping viscoelastic limit_damping{tail}",
-            fmt_num(young),
-            fmt_num(self.viscoelastic.eta_n0)
-        );
+        let line = |damp: f64, model: &str| {
+            format!(
+                "{head} {} {} {DEM_POISSON} {tangential} damping {model} limit_damping{tail}",
+                fmt_num(young),
+                fmt_num(damp)
+            )
+        };
+        let gamma = cor_gamma(self.constant.cor_input).ok();
+        let constant = if version.has_coeff_restitution() {
+            Ok(line(self.constant.cor_input, "coeff_restitution"))
+        } else {
+            match gamma.and_then(tsuji_input) {
+                Some(e) => Ok(line(e, "tsuji")),
+                None => Err(format!(
+                    "# the constant CoR law: {} has no coeff_restitution, and no damping tsuji \
+                     input gives its prefactor {:.6e} (tsuji covers {:.4e} to {:.4e})",
+                    version.label(),
+                    gamma.unwrap_or(f64::NAN),
+                    tsuji_alpha(1.0),
+                    tsuji_alpha(0.0)
+                )),
+            }
+        };
+        if !version.has_coeff_restitution() {
+            s.push_str(&format!(
+                "# constant CoR law: {} has no damping coeff_restitution; damping tsuji with \
+                 the input whose Marshall polynomial equals the law's prefactor gives the same \
+                 force\n",
+                version.label()
+            ));
+        }
+        let visco = line(self.viscoelastic.eta_n0, "viscoelastic");
         s.push_str("# tangential: frictionless placeholder, set your own friction model\n");
         s.push_str("pair_style granular\n");
         match self.geometry {
@@ -994,16 +1207,26 @@ impl DemReport {
                  these parameters are for the 1-2 contact\n",
             ),
         }
-        let (on, off) = if self.viscoelastic_is_better() {
-            (visco, constant)
-        } else {
-            (constant, visco)
-        };
-        s.push_str(&on);
-        s.push('\n');
-        s.push_str("# the other law:\n# ");
-        s.push_str(&off);
-        s.push('\n');
+        match constant {
+            Ok(constant) => {
+                let (on, off) = if self.viscoelastic_is_better() {
+                    (visco, constant)
+                } else {
+                    (constant, visco)
+                };
+                s.push_str(&on);
+                s.push('\n');
+                s.push_str("# the other law:\n# ");
+                s.push_str(&off);
+                s.push('\n');
+            }
+            Err(note) => {
+                s.push_str(&visco);
+                s.push('\n');
+                s.push_str(&note);
+                s.push('\n');
+            }
+        }
         s
     }
 
@@ -1021,6 +1244,9 @@ impl DemReport {
         );
         let y = fmt_num(self.contact.dem_young());
         let e = fmt_num(self.constant.cor_input);
+        s.push_str(&format!(
+            "# proven on {LIGGGHTS_PROVEN} (Debian liggghts) by validation/dem_clients/verify.py\n"
+        ));
         s.push_str("# the viscoelastic law has no counterpart in LIGGGHTS's model hertz\n");
         s.push_str(&format!(
             "fix m1 all property/global youngsModulus peratomtype {y} {y}\n"
@@ -1038,9 +1264,10 @@ impl DemReport {
         s.push_str("pair_style gran model hertz tangential history limitForce on\n");
         s.push_str("pair_coeff * *\n");
         if self.geometry == Geometry::Wall {
+            // LIGGGHTS 3.8 wants the wall's keywords (primitive ...) before limitForce
             s.push_str(
-                "fix wall all wall/gran model hertz tangential history limitForce on primitive \
-                 type 2 zplane 0.0\n",
+                "fix wall all wall/gran model hertz tangential history primitive type 2 zplane \
+                 0.0 limitForce on\n",
             );
         }
         s
@@ -1111,7 +1338,7 @@ impl DemReport {
     /// The text of `format`: input lines, or the JSON object.
     pub fn text(&self, format: Format) -> String {
         match format {
-            Format::Lammps => self.lammps_text(),
+            Format::Lammps(v) => self.lammps_text_for(v),
             Format::Liggghts => self.liggghts_text(),
             Format::Json => self.json(),
         }
@@ -1141,7 +1368,7 @@ pub fn write_outputs(dir: &Path, report: &DemReport, format: Format) -> Result<W
         (svg.clone(), dem_svg(&svg, report)?),
     ];
     match format {
-        Format::Lammps => bodies.push((dir.join("dem_lammps.in"), report.lammps_text())),
+        Format::Lammps(v) => bodies.push((dir.join("dem_lammps.in"), report.lammps_text_for(v))),
         Format::Liggghts => bodies.push((dir.join("dem_liggghts.in"), report.liggghts_text())),
         Format::Json => {}
     }
