@@ -7,8 +7,8 @@ mod common;
 
 use common::{run, stderr};
 
-use mdr_impact::curve::{CurveRow, VelocityRange};
-use mdr_impact::dem::{
+use mdr_impact::apps::curve::{CurveRow, VelocityRange};
+use mdr_impact::apps::dem::{
     self, tsuji_alpha, tsuji_input, DemLaw, DemReport, Format, Geometry, HertzContact,
     LammpsVersion, ModulusChoice, LAMMPS_COEFF_RESTITUTION_SINCE, LAMMPS_OLDEST,
     LAMMPS_WALL_MIX_SINCE,

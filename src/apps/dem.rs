@@ -192,7 +192,7 @@ pub fn tsuji_input(gamma: f64) -> Option<f64> {
         return None;
     }
     let (mut lo, mut hi) = (0.0f64, 1.0f64);
-    for _ in 0..crate::tolerances::ROOT_MAX_ITER {
+    for _ in 0..crate::model::tolerances::ROOT_MAX_ITER {
         let mid = 0.5 * (lo + hi);
         if mid <= lo || mid >= hi {
             break;
