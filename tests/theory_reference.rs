@@ -14,6 +14,7 @@ fn canonical(nu: f64, p2: f64, p3: f64) -> Prony {
         .canonical_material()
         .unwrap()
         .equivalent_relaxation()
+        .unwrap()
 }
 
 /// Elastic series: e = 1 to 1e-12, contact time, maximum indentation and force equal Hertz with
