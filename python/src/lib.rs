@@ -932,7 +932,7 @@ impl ImpactResult {
             dissipated_energy: o.dissipated_energy,
             estimated_rel_error: o.cor_error_estimate,
             solver: o.solver,
-            fallback: o.fallback,
+            fallback: o.fallback.map(|e| e.to_string()),
             work: o.work,
             histories: o.history,
             velocities,

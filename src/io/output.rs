@@ -175,7 +175,7 @@ pub fn summary(impact: &Impact, o: &Outcome) -> String {
     }
     line("solver", o.solver.to_string());
     if let Some(why) = &o.fallback {
-        line("  instead of fast", why.clone());
+        line("  instead of fast", why.to_string());
     }
     line("coefficient of restitution", format!("{:.9}", o.cor));
     if let Some(est) = o.cor_error_estimate {
@@ -264,7 +264,7 @@ fn value(o: &Outcome) -> serde_json::Value {
         "dissipated_energy": o.dissipated_energy,
         "solver": o.solver,
         "estimated_rel_error": o.cor_error_estimate,
-        "fallback": o.fallback,
+        "fallback": o.fallback.as_ref().map(|e| e.to_string()),
         "work": {
             "steps": o.work.steps,
             "elements": o.work.elements,

@@ -389,11 +389,32 @@ pub struct Outcome {
     /// Name of the solver that produced it.
     pub solver: &'static str,
     /// Why `auto` did not answer with its first choice: the refusal of `fast` when `reference`
-    /// answered instead (`None` otherwise).
-    pub fallback: Option<String>,
+    /// answered instead (`None` otherwise), as the typed error.
+    pub fallback: Option<Box<Error>>,
 }
 
 impl Outcome {
+    /// The refusal of `fast` that made `auto` fall back ([`Outcome::fallback`]) as one line that
+    /// names `fast`: the message itself when its variant starts with the solver's name (every
+    /// accuracy, work and capability refusal does), else the message after `fast: `.
+    pub fn fallback_reason(&self) -> Option<String> {
+        let e = self.fallback.as_deref()?;
+        let named = matches!(
+            e.root(),
+            Error::AccuracyNotReached { .. }
+                | Error::NotAsymptotic { .. }
+                | Error::StepSizeTooSmall { .. }
+                | Error::WorkLimit { .. }
+                | Error::TooManyTerms { .. }
+                | Error::NotSupported { .. }
+        ) && !matches!(e, Error::In { .. });
+        Some(if named {
+            e.to_string()
+        } else {
+            format!("fast: {e}")
+        })
+    }
+
     /// Map a canonical outcome (`m = R = v0 = G_inf = 1`) to SI with the impact's scales.
     pub fn to_si(mut self, impact: &Impact) -> Outcome {
         let s = impact.scales();

@@ -269,7 +269,7 @@ fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
                         .and_then(|p| theory::impact(&p, opts.rtol, opts.history));
                     match reference {
                         Ok(mut o) => {
-                            o.fallback = Some(first.to_string());
+                            o.fallback = Some(Box::new(first));
                             Ok(o)
                         }
                         Err(second) => Err(Error::NoSolver {
