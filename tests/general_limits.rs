@@ -52,7 +52,8 @@ fn general_limits() {
         ));
     };
 
-    // one term = the standard solid (G_1 = 100, eta = 1, nu = 0.45)
+    // one term = the standard solid (G_1 = 100, eta = 1, nu = 0.45): the same shape, the same
+    // path, the same outcome to the bit
     let standard = Material::with_poisson(1.0, 100.0, 1.0, 0.45).unwrap();
     let s = fast(&Impact::new(Sphere::new(1.0, 1.0).unwrap(), 1.0, standard).unwrap());
     let g = fast(&general(&[(100.0, 0.01)], BulkInput::Poisson(0.45)));
