@@ -4,15 +4,15 @@
 //!
 //! Run: `cargo run --release --example general_material`
 
-use mdr_impact::model::material::{BulkProny, BulkRheology, GeneralMaterial, ShearProny};
-use mdr_impact::{solve, Impact, SolveOptions, SolverKind, Sphere};
+use mdr_impact::model::material::{BulkInput, BulkProny, ShearProny};
+use mdr_impact::{solve, Impact, Material, SolveOptions, SolverKind, Sphere};
 
 fn main() -> mdr_impact::Result<()> {
     // shear: G_inf = 1 MPa plus three Maxwell branches (modulus Pa, time s)
     let shear = ShearProny::new(1.0e6, &[(5.0e6, 1.0e-6), (2.0e6, 1.0e-4), (1.0e6, 1.0e-2)])?;
     // bulk: K_inf = 50 MPa plus one branch of 20 MPa relaxing in 10 us
-    let bulk = BulkRheology::Prony(BulkProny::new(5.0e7, &[(2.0e7, 1.0e-5)])?);
-    let material = GeneralMaterial::new(shear, bulk)?;
+    let bulk = BulkInput::Prony(BulkProny::new(5.0e7, &[(2.0e7, 1.0e-5)])?);
+    let material = Material::general(shear, bulk)?;
     let g_eq = material.equivalent_relaxation()?;
     println!(
         "G_eq(t) = {:.6e} Pa relaxed, {} terms:",
@@ -22,7 +22,7 @@ fn main() -> mdr_impact::Result<()> {
     for t in &g_eq.terms {
         println!("  {:.6e} Pa  exp(-t / {:.6e} s)", t.coefficient, t.tau);
     }
-    let impact = Impact::with_general(Sphere::new(4.1e-3, 5.0e-3)?, 1.0, material)?;
+    let impact = Impact::new(Sphere::new(4.1e-3, 5.0e-3)?, 1.0, material)?;
     for solver in [SolverKind::Fast, SolverKind::Reference] {
         let o = solve(&impact, &SolveOptions::with(solver, 1e-8))?;
         println!(

@@ -471,14 +471,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 );
                 let impact = Impact::from_groups(Groups::new(nu, p2, p3)?)?;
                 let o = solve(&impact, &opts)?;
-                if let Some(why) = &o.fallback {
-                    // `why` is the refusal of fast, which names it ("fast: requested rtol ...")
-                    let fast = SolverKind::Fast.name();
-                    let why = if why.starts_with(&format!("{fast}:")) {
-                        why.clone()
-                    } else {
-                        format!("{fast}: {why}")
-                    };
+                if let Some(why) = o.fallback_reason() {
                     eprintln!("note: answered by {} ({})", o.solver, escape_text(&why));
                 }
                 println!("{}", o.cor);

@@ -27,7 +27,10 @@ fn element_network_relaxes_like_equivalent_relaxation() {
         (0.499, 3.0, 7.0),
         (0.5, 50.0, 1.0),
     ] {
-        let m = Material::with_poisson(1.0, g1, eta, nu).unwrap();
+        let m = Material::with_poisson(1.0, g1, eta, nu)
+            .unwrap()
+            .as_standard_solid()
+            .unwrap();
         let net = ElementNetwork::new(&m);
         let g = m.equivalent_relaxation();
         let col = |w1, w3| {
@@ -202,7 +205,7 @@ fn error_variants() {
     let mat = Material::with_poisson(1.0, 1.0, 1.0, 0.3).unwrap();
     let s = Sphere::new(1.0, 1.0).unwrap();
     assert!(matches!(
-        Impact::new(s, 0.0, mat),
+        Impact::new(s, 0.0, mat.clone()),
         Err(OutOfRange {
             field: "velocity",
             ..

@@ -3,7 +3,7 @@
 //! independent reference integrator; identities (split terms, frozen and instant terms); and
 //! random series of up to 40 terms without panic or NaN.
 
-use mdr_impact::model::material::rheology::{BulkProny, BulkRheology, GeneralMaterial, ShearProny};
+use mdr_impact::model::material::{BulkInput, BulkProny, Material, ShearProny};
 use mdr_impact::solvers::theory::reference;
 use mdr_impact::{solvers::fast, Error, Prony, PronyTerm};
 use proptest::prelude::*;
@@ -32,9 +32,9 @@ fn material(n_shear: usize, lo: f64, g: f64, n_bulk: usize, k_inf: f64, k: f64) 
         .into_iter()
         .map(|t| (k, t))
         .collect();
-    let m = GeneralMaterial::new(
+    let m = Material::general(
         ShearProny::new(1.0, &shear).unwrap(),
-        BulkRheology::Prony(BulkProny::new(k_inf, &bulk).unwrap()),
+        BulkInput::Prony(BulkProny::new(k_inf, &bulk).unwrap()),
     )
     .unwrap();
     m.equivalent_relaxation().unwrap()

@@ -12,7 +12,7 @@
 use std::process::Command;
 
 use mdr_impact::io::scene::Scene;
-use mdr_impact::model::material::{BulkProny, BulkRheology, GeneralMaterial, Material, ShearProny};
+use mdr_impact::model::material::{BulkInput, BulkProny, Material, ShearProny};
 use mdr_impact::report::validate::fmt_err;
 use mdr_impact::{
     solve, Body, BodyMaterial, Error, Impact, Outcome, Side, SolverKind, Sphere, TwoBodies,
@@ -29,11 +29,11 @@ fn elastomer() -> Material {
     Material::with_poisson(1.0e6, 1.0e7, 500.0, 0.49).unwrap()
 }
 
-fn polymer() -> GeneralMaterial {
+fn polymer() -> Material {
     let shear =
         ShearProny::new(5.0e6, &[(2.0e7, 1.0e-6), (3.0e7, 1.0e-5), (1.0e7, 1.0e-4)]).unwrap();
     let bulk = BulkProny::new(2.0e8, &[(1.0e8, 1.0e-5)]).unwrap();
-    GeneralMaterial::new(shear, BulkRheology::Prony(bulk)).unwrap()
+    Material::general(shear, BulkInput::Prony(bulk)).unwrap()
 }
 
 fn body(side: Side, mass: f64, radius: f64, m: BodyMaterial) -> Body {
@@ -76,12 +76,12 @@ fn two_body_checks() {
         (
             "standard solid",
             Impact::new(sphere, v0, elastomer()).unwrap(),
-            BodyMaterial::StandardSolid(elastomer()),
+            BodyMaterial::Viscoelastic(elastomer()),
         ),
         (
             "general",
             Impact::with_general(sphere, v0, polymer()).unwrap(),
-            BodyMaterial::General(polymer()),
+            BodyMaterial::Viscoelastic(polymer()),
         ),
     ] {
         let two = collision(body(Side::A, mass, radius, a_mat), wall(Side::B), v0);
@@ -110,7 +110,7 @@ fn two_body_checks() {
         )
         .unwrap();
         let bulk = BulkProny::new(2.0e16, &[(1.0e16, 1.0e-5)]).unwrap();
-        GeneralMaterial::new(shear, BulkRheology::Prony(bulk)).unwrap()
+        Material::general(shear, BulkInput::Prony(bulk)).unwrap()
     };
     let one = Impact::new(sphere, v0, elastomer()).unwrap();
     let near = collision(
@@ -118,13 +118,13 @@ fn two_body_checks() {
             Side::A,
             mass,
             radius,
-            BodyMaterial::StandardSolid(elastomer()),
+            BodyMaterial::Viscoelastic(elastomer()),
         ),
         body(
             Side::B,
             f64::INFINITY,
             f64::INFINITY,
-            BodyMaterial::General(stiff),
+            BodyMaterial::Viscoelastic(stiff),
         ),
         v0,
     );
@@ -142,7 +142,7 @@ fn two_body_checks() {
     for (name, mat, half) in [
         (
             "standard solid",
-            BodyMaterial::StandardSolid(elastomer()),
+            BodyMaterial::Viscoelastic(elastomer()),
             Impact::new(
                 Sphere::new(mass / 2.0, radius / 2.0).unwrap(),
                 v0,
@@ -152,13 +152,13 @@ fn two_body_checks() {
         ),
         (
             "general",
-            BodyMaterial::General(polymer()),
+            BodyMaterial::Viscoelastic(polymer()),
             Impact::with_general(Sphere::new(mass / 2.0, radius / 2.0).unwrap(), v0, {
                 let shear =
                     ShearProny::new(2.5e6, &[(1.0e7, 1.0e-6), (1.5e7, 1.0e-5), (0.5e7, 1.0e-4)])
                         .unwrap();
                 let bulk = BulkProny::new(1.0e8, &[(0.5e8, 1.0e-5)]).unwrap();
-                GeneralMaterial::new(shear, BulkRheology::Prony(bulk)).unwrap()
+                Material::general(shear, BulkInput::Prony(bulk)).unwrap()
             })
             .unwrap(),
         ),
@@ -195,9 +195,14 @@ fn two_body_checks() {
         Side::A,
         4.6e-3,
         1.0e-2,
-        BodyMaterial::StandardSolid(elastomer()),
+        BodyMaterial::Viscoelastic(elastomer()),
     );
-    let b = body(Side::B, 6.3e-4, 5.0e-3, BodyMaterial::General(polymer()));
+    let b = body(
+        Side::B,
+        6.3e-4,
+        5.0e-3,
+        BodyMaterial::Viscoelastic(polymer()),
+    );
     let ab = collision(a.clone(), b.clone(), 2.0);
     let ba = collision(
         body(Side::A, b.mass(), b.radius(), b.material().clone()),
@@ -254,9 +259,14 @@ fn rebound_velocities_conserve_momentum() {
         Side::A,
         4.6e-3,
         1.0e-2,
-        BodyMaterial::StandardSolid(elastomer()),
+        BodyMaterial::Viscoelastic(elastomer()),
     );
-    let b = body(Side::B, 6.3e-4, 5.0e-3, BodyMaterial::General(polymer()));
+    let b = body(
+        Side::B,
+        6.3e-4,
+        5.0e-3,
+        BodyMaterial::Viscoelastic(polymer()),
+    );
     let imp = collision(a, b, 2.0);
     let o = run(&imp, SolverKind::Fast, 1e-8);
     let two = imp.bodies().unwrap();
@@ -273,7 +283,7 @@ fn rebound_velocities_conserve_momentum() {
 
 #[test]
 fn bad_bodies_are_refused() {
-    let m = || BodyMaterial::StandardSolid(elastomer());
+    let m = || BodyMaterial::Viscoelastic(elastomer());
     for (mass, radius) in [
         (0.0, 1.0),
         (-1.0, 1.0),
@@ -283,7 +293,8 @@ fn bad_bodies_are_refused() {
     ] {
         assert!(matches!(
             Body::new(Side::B, mass, radius, m()),
-            Err(Error::OutOfRange { field, .. }) if field.starts_with("body B")
+            Err(Error::In { place, source }) if place == "body B"
+                && matches!(*source, Error::OutOfRange { .. })
         ));
     }
     let sphere = |mat| body(Side::A, 1.0, 1.0, mat);
@@ -355,8 +366,8 @@ fn bad_scenes_are_one_line_errors() {
                 .to_string(),
             "exactly two",
         ),
-        (TWO.replace("mass = 4.6e-3", "mass = 0.0"), "body A mass"),
-        (TWO.replace("mass = 4.6e-3", "mass = -1.0"), "body A mass"),
+        (TWO.replace("mass = 4.6e-3", "mass = 0.0"), "body A: mass"),
+        (TWO.replace("mass = 4.6e-3", "mass = -1.0"), "body A: mass"),
         (
             TWO.replace("mass = 4.6e-3", "mass = 1.0\ndensity = 1.0"),
             "not both",

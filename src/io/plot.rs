@@ -220,7 +220,9 @@ pub fn panels_svg(
 ) -> Result<String> {
     let e = |e: &dyn std::fmt::Display| Error::io(path, e);
     if !(x0 < x1) || panels.is_empty() {
-        return Err(Error::Internal("panels_svg needs a non-empty x range and a panel"));
+        return Err(Error::Internal(
+            "panels_svg needs a non-empty x range and a panel",
+        ));
     }
     let mut svg = String::new();
     {

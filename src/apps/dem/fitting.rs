@@ -201,4 +201,3 @@ pub fn fit_viscoelastic(
         fit: Fit::new(cor, target),
     })
 }
-

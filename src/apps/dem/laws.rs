@@ -317,4 +317,3 @@ pub fn integrate(p: f64, c: f64) -> Result<Dimensionless> {
         h *= (0.9 * norm.max(1e-10).powf(-0.2)).min(5.0);
     }
 }
-

@@ -355,4 +355,3 @@ pub fn fit(
         warnings,
     })
 }
-

@@ -208,4 +208,3 @@ impl std::str::FromStr for ModulusChoice {
         }
     }
 }
-
