@@ -201,14 +201,7 @@ pub fn run(
     let sphere = impact.sphere();
     let contact = HertzContact::new(sphere.mass(), sphere.radius(), e_star)?;
     let (geometry, note) = geometry(impact);
-    let report = fit(c.rows, range.log, modulus, contact, geometry, note)?;
-    if modulus != ModulusChoice::Fit {
-        return Ok(report);
-    }
-    let e_star = fit_stiffness(&report);
-    let contact = HertzContact::new(sphere.mass(), sphere.radius(), e_star)?;
-    let (geometry, note) = self::geometry(impact);
-    fit(report.rows, range.log, modulus, contact, geometry, note)
+    fit(c.rows, range.log, modulus, contact, geometry, note)
 }
 
 /// The effective modulus `E*` (Pa) at which the two laws' contact times best match ours in
@@ -227,8 +220,26 @@ pub fn fit_stiffness(report: &DemReport) -> f64 {
     report.contact.effective_modulus * (2.5 * sum / n as f64).exp()
 }
 
-/// Fit both laws to `rows` (our `e(v0)`) with the Hertz `contact`.
+/// Fit both laws to `rows` (our `e(v0)`) with the Hertz `contact`; with [`ModulusChoice::Fit`]
+/// `contact`'s modulus is only the start: the laws are fitted again at [`fit_stiffness`].
 pub fn fit(
+    rows: Vec<CurveRow>,
+    log: bool,
+    modulus: ModulusChoice,
+    contact: HertzContact,
+    geometry: Geometry,
+    note: Option<String>,
+) -> Result<DemReport> {
+    if modulus != ModulusChoice::Fit {
+        return fit_at(rows, log, modulus, contact, geometry, note);
+    }
+    let first = fit_at(rows, log, modulus, contact, geometry, None)?;
+    let fitted = HertzContact::new(contact.mass, contact.radius, fit_stiffness(&first))?;
+    fit_at(first.rows, log, modulus, fitted, geometry, note)
+}
+
+/// [`fit`] at the stiffness of `contact`.
+fn fit_at(
     rows: Vec<CurveRow>,
     log: bool,
     modulus: ModulusChoice,
