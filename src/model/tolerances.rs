@@ -58,6 +58,11 @@ pub const FIT_LM_TOL: f64 = 1e-9;
 /// `fit`: the Levenberg-Marquardt iteration stops after this many residual evaluations per
 /// free parameter (plus one).
 pub const FIT_LM_PATIENCE: usize = 40;
+/// `fit`: relative tolerances of the short Levenberg-Marquardt runs that scout the basins of
+/// the stiffness ratio before the full minimisations.
+pub const FIT_SCOUT_TOL: f64 = 1e-4;
+/// `fit`: residual evaluations per free parameter (plus one) of a scouting run.
+pub const FIT_SCOUT_PATIENCE: usize = 4;
 /// `fit`: Levenberg-Marquardt runs started from the best screened points.
 pub const FIT_LM_STARTS: usize = 2;
 /// `fit`: step of the profile likelihood in a parameter's coordinate (a quarter decade).

@@ -58,6 +58,7 @@
 //! [`FIT_PROFILE_STEP`]: crate::model::tolerances::FIT_PROFILE_STEP
 //! [`FIT_PROFILE_STEPS`]: crate::model::tolerances::FIT_PROFILE_STEPS
 
+pub mod checks;
 pub mod data;
 pub mod model;
 pub mod report;
@@ -73,7 +74,7 @@ use crate::model::impact::{Impact, Sphere};
 use crate::model::tolerances::{
     FIT_FD_STEP, FIT_LM_PATIENCE, FIT_LM_STARTS, FIT_LM_TOL, FIT_MAX_HALF_WIDTH,
     FIT_NULL_COMPONENT, FIT_NULL_RATIO, FIT_PROFILE_STEP, FIT_PROFILE_STEPS, FIT_RTOL,
-    FIT_SCREEN_RTOL,
+    FIT_SCOUT_PATIENCE, FIT_SCOUT_TOL, FIT_SCREEN_RTOL,
 };
 use crate::solvers::{solve, SolveOptions, SolverKind};
 pub use data::{Data, Observation, Setup};
@@ -211,6 +212,13 @@ pub struct FitResult {
     pub solves: usize,
     /// One-line identifiability verdict.
     pub verdict: String,
+    /// The `nu` of the estimate when it was fitted but the data do not determine it: every
+    /// fitted modulus holds only for it ([`checks::condition_on_nu`]).
+    pub conditional_on_nu: Option<f64>,
+    /// Chi-square goodness of fit, when every standard deviation was given.
+    pub goodness: Option<checks::Goodness>,
+    /// Warnings about the fit as a whole (the model does not fit; the CoR rises with `v0`).
+    pub warnings: Vec<String>,
 }
 
 /// The weighted problem: model, data, which coordinates move.
@@ -222,6 +230,9 @@ struct Ctx<'a> {
     p3_scale: f64,
     /// Fixed values (never clamped).
     fixed: Vec<Option<f64>>,
+    /// rtol of the forward solves inside Levenberg–Marquardt ([`FIT_RTOL`]; looser while
+    /// scouting, [`Ctx::scout`]).
+    lm_rtol: Cell<f64>,
 }
 
 impl<'a> Ctx<'a> {
@@ -232,6 +243,7 @@ impl<'a> Ctx<'a> {
             solves: Cell::new(0),
             p3_scale: p3_scale(data),
             fixed: fixed.to_vec(),
+            lm_rtol: Cell::new(FIT_RTOL),
         }
     }
 
@@ -298,6 +310,54 @@ impl<'a> Ctx<'a> {
 
     /// Levenberg–Marquardt from `coords` over the coordinates `moving` (the others held):
     /// the misfit (SSR) and parameter values at the end.
+    /// A cheap look into the basin of `coords`: a few Levenberg–Marquardt steps with forward
+    /// solves at [`FIT_SCREEN_RTOL`]; the misfit there (at that rtol) and the values reached.
+    fn scout(&self, coords: Vec<f64>, moving: &[usize]) -> Result<(f64, Vec<f64>)> {
+        self.lm_rtol.set(FIT_SCREEN_RTOL);
+        let lm = LevenbergMarquardt::new()
+            .with_ftol(FIT_SCOUT_TOL)
+            .with_xtol(FIT_SCOUT_TOL)
+            .with_gtol(FIT_SCOUT_TOL)
+            .with_patience(FIT_SCOUT_PATIENCE);
+        let problem = LmProblem {
+            ctx: self,
+            coords,
+            moving: moving.to_vec(),
+            failure: RefCell::new(None),
+        };
+        let (p, _) = lm.minimize(problem);
+        self.lm_rtol.set(FIT_RTOL);
+        let values = self.values(&p.coords);
+        let s = ssr(&self.residuals(&values, FIT_SCREEN_RTOL)?);
+        if !s.is_finite() {
+            return Err(Error::NonFinite {
+                what: "fit misfit",
+                value: s,
+            });
+        }
+        Ok((s, values))
+    }
+
+    /// The best scouted point ([`Ctx::scout`]) from the best screened point of every decade of
+    /// the stiffness ratio `p2` among `points` (sorted best first), `moving` free.
+    fn scout_bins(&self, points: &[&Vec<f64>], moving: &[usize]) -> Option<(f64, Vec<f64>)> {
+        let mut bins: Vec<i64> = Vec::new();
+        let mut best: Option<(f64, Vec<f64>)> = None;
+        for v in points {
+            let bin = stiffness_ratio(self.model, v).log10().round() as i64;
+            if bins.contains(&bin) {
+                continue;
+            }
+            bins.push(bin);
+            if let Ok(m) = self.scout(self.coords(v), moving) {
+                if !best.as_ref().is_some_and(|b| b.0 <= m.0) {
+                    best = Some(m);
+                }
+            }
+        }
+        best
+    }
+
     fn minimise(&self, coords: Vec<f64>, moving: &[usize]) -> Result<(f64, Vec<f64>)> {
         if moving.is_empty() {
             let values = self.values(&coords);
@@ -409,9 +469,9 @@ impl<'a> Ctx<'a> {
         for &j in moving {
             let mut c = coords.to_vec();
             c[j] = coords[j] + FIT_FD_STEP;
-            let plus = self.residuals(&self.values(&c), FIT_RTOL)?;
+            let plus = self.residuals(&self.values(&c), self.lm_rtol.get())?;
             c[j] = coords[j] - FIT_FD_STEP;
-            let minus = self.residuals(&self.values(&c), FIT_RTOL)?;
+            let minus = self.residuals(&self.values(&c), self.lm_rtol.get())?;
             cols.push(
                 plus.iter()
                     .zip(&minus)
@@ -455,7 +515,10 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for LmProblem<'_, '_> {
         )
     }
     fn residuals(&self) -> Option<LmVector<f64>> {
-        let r = self.note(self.ctx.residuals(&self.ctx.values(&self.coords), FIT_RTOL))?;
+        let r = self.note(
+            self.ctx
+                .residuals(&self.ctx.values(&self.coords), self.ctx.lm_rtol.get()),
+        )?;
         Some(LmVector::from_vec(r))
     }
     fn jacobian(&self) -> Option<LmMatrix<f64>> {
@@ -633,11 +696,23 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
             nus.sort_by(f64::total_cmp);
             nus.dedup();
             for nu in nus {
-                let best_of_level = screened
+                // the best points of the level, and the best scouted basin of the stiffness
+                // ratio p2 in it (the Kelvin corner p2 -> 0 attracts the best screened points
+                // when nu is near 0.5)
+                let level: Vec<&Vec<f64>> = screened
                     .iter()
                     .filter(|(_, v)| v[inu] == nu)
+                    .map(|(_, v)| v)
+                    .collect();
+                let mut from: Vec<Vec<f64>> = level
+                    .iter()
                     .take(FIT_LM_STARTS)
-                    .filter_map(|(_, v)| match ctx.minimise(ctx.coords(v), &held) {
+                    .map(|v| (*v).clone())
+                    .collect();
+                from.extend(ctx.scout_bins(&level, &held).map(|(_, v)| v));
+                let best_of_level = from
+                    .iter()
+                    .filter_map(|v| match ctx.minimise(ctx.coords(v), &held) {
                         Ok(m) => Some(m),
                         Err(e) => {
                             last_error = e.to_string();
@@ -652,6 +727,13 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
             starts_from.extend(levels.into_iter().take(FIT_LM_STARTS + 1).map(|(_, v)| v));
         }
         None => starts_from.extend(screened.iter().take(FIT_LM_STARTS).map(|(_, v)| v.clone())),
+    }
+    // Global stage: the best basin scouted from every decade of the stiffness ratio `p2`
+    // starts a full minimisation too, so that a basin away from the best screened points is
+    // not missed.
+    let all: Vec<&Vec<f64>> = screened.iter().map(|(_, v)| v).collect();
+    if let Some((_, v)) = ctx.scout_bins(&all, &moving) {
+        starts_from.push(v);
     }
     let mut minima: Vec<(f64, Vec<f64>)> = Vec::new();
     let starts = starts_from.len();
@@ -670,7 +752,22 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
     }
     let best = minima.remove(0);
     probes.extend(minima);
-    analyse(&ctx, best, &probes, fixed, &free, &moving)
+    let mut result = analyse(&ctx, best, &probes, fixed, &free, &moving)?;
+    checks::apply(&mut result);
+    Ok(result)
+}
+
+/// `p2 = g_inf / (sum of the relaxing shear moduli)` of the parameter `values`.
+fn stiffness_ratio(model: &Model, values: &[f64]) -> f64 {
+    let g_inf = model.index("g_inf").map_or(f64::NAN, |i| values[i]);
+    let relaxing: f64 = model
+        .params
+        .iter()
+        .zip(values)
+        .filter(|(p, _)| p.name.starts_with("g_") && p.name != "g_inf")
+        .map(|(_, v)| v)
+        .sum();
+    g_inf / relaxing
 }
 
 /// The weighted sum of squared residuals of `data` for the parameter `values` (forward solves at
@@ -965,6 +1062,9 @@ fn analyse(
         covariance,
         solves: ctx.solves.get(),
         verdict,
+        conditional_on_nu: None,
+        goodness: None,
+        warnings: Vec::new(),
     })
 }
 

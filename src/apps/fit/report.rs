@@ -15,7 +15,7 @@ fn json_number(x: f64) -> serde_json::Value {
     serde_json::Number::from_f64(x).map_or(serde_json::Value::Null, serde_json::Value::Number)
 }
 
-fn estimate_json(e: &Estimate) -> serde_json::Value {
+fn estimate_json(e: &Estimate, conditional_on_nu: Option<f64>) -> serde_json::Value {
     serde_json::json!({
         "value": e.value.map(json_number),
         "ci95": e.ci95.map(|(a, b)| vec![json_number(a), json_number(b)]),
@@ -23,22 +23,37 @@ fn estimate_json(e: &Estimate) -> serde_json::Value {
         "fixed": e.fixed,
         "unit": e.unit,
         "note": e.note,
+        "conditional_on": conditional_on_nu.map(|nu| serde_json::json!({"nu": json_number(nu)})),
+    })
+}
+
+/// The `nu` a parameter estimate is conditional on ([`FitResult::conditional_on_nu`]): fitted
+/// moduli and viscosities only.
+fn condition(r: &FitResult, e: &Estimate) -> Option<f64> {
+    r.conditional_on_nu.filter(|_| {
+        !e.fixed
+            && e.value.is_some()
+            && e.unit != "1"
+            && r.parameters.iter().any(|p| p.name == e.name)
     })
 }
 
 /// The JSON object of `fit --json`: `parameters` and `groups` (each `{"value", "ci95",
 /// "identifiable", "fixed", "unit", "note"}`, `value`/`ci95` null when not determined),
 /// `rms_residual`, plus `model`, `taus` (s, Prony), `k_0` (Pa, when fixed), `dof`,
-/// `noise_scale`, `singular_values`, `verdict` and `residuals` (`observation`, `quantity`,
+/// `noise_scale`, `singular_values`, `verdict`, `conditional_on_nu` (the `nu` every fitted
+/// modulus holds for when the data do not determine `nu`, else null; each such parameter also
+/// has `conditional_on: {"nu": ...}`), `goodness` (`chi2`, `dof`, `p_value` with standard
+/// deviations given, else null), `warnings` and `residuals` (`observation`, `quantity`,
 /// `measured`, `model`, `weighted`). SI units.
 pub fn json(r: &FitResult) -> serde_json::Value {
     let mut parameters = serde_json::Map::new();
     for e in &r.parameters {
-        parameters.insert(e.name.clone(), estimate_json(e));
+        parameters.insert(e.name.clone(), estimate_json(e, condition(r, e)));
     }
     let mut groups = serde_json::Map::new();
     for e in &r.groups {
-        groups.insert(e.name.clone(), estimate_json(e));
+        groups.insert(e.name.clone(), estimate_json(e, None));
     }
     let residuals: Vec<serde_json::Value> = r
         .residuals
@@ -64,6 +79,13 @@ pub fn json(r: &FitResult) -> serde_json::Value {
         "k_0": r.model.k_0.map(json_number),
         "singular_values": r.singular_values.iter().map(|s| json_number(*s)).collect::<Vec<_>>(),
         "verdict": r.verdict,
+        "conditional_on_nu": r.conditional_on_nu.map(json_number),
+        "goodness": r.goodness.map(|g| serde_json::json!({
+            "chi2": json_number(g.chi2),
+            "dof": g.dof,
+            "p_value": json_number(g.p_value),
+        })),
+        "warnings": r.warnings,
         "residuals": residuals,
     })
 }
@@ -116,9 +138,13 @@ pub fn summary(r: &FitResult, written: Option<&Written>) -> String {
         } else {
             "  [not identifiable]"
         };
+        let cond = match condition(r, e) {
+            Some(nu) => format!("  (conditional on nu = {nu:.4})"),
+            None => String::new(),
+        };
         line(
             &format!("{} ({})", e.name, e.unit),
-            format!("{}{flag}", value_text(e)),
+            format!("{}{cond}{flag}", value_text(e)),
         );
         if !e.identifiable && !e.note.is_empty() {
             line("", format!("  {}", e.note));
@@ -140,6 +166,18 @@ pub fn summary(r: &FitResult, written: Option<&Written>) -> String {
         .collect();
     line("singular values", sv.join(", "));
     line("identifiability", r.verdict.clone());
+    if let Some(g) = r.goodness {
+        line(
+            "goodness of fit",
+            format!(
+                "chi^2 = {:.4} on {} degrees of freedom, p = {:.3e}",
+                g.chi2, g.dof, g.p_value
+            ),
+        );
+    }
+    for w in &r.warnings {
+        line("warning", w.clone());
+    }
     out.push_str("residuals (drop, quantity, measured, model, weighted):\n");
     for x in &r.residuals {
         out.push_str(&format!(
@@ -175,6 +213,8 @@ pub fn toml_block(r: &FitResult) -> String {
             s.push_str(&format!("{key} = {:e}", e.value.unwrap_or(f64::NAN)));
             let tag = if e.fixed {
                 "fixed".to_string()
+            } else if let Some(nu) = condition(r, e) {
+                format!("{unit}, conditional on poisson = {nu:.4}, which the data do not determine")
             } else if e.identifiable {
                 unit.to_string()
             } else {
@@ -186,9 +226,13 @@ pub fn toml_block(r: &FitResult) -> String {
             "# {key} = ?    # {unit}: not determined by the data\n"
         )),
     };
-    let bulk = |s: &mut String| match r.model.k_0 {
-        Some(k) => s.push_str(&format!("k_0 = {k:e}    # Pa, fixed\n")),
-        None => line(s, "poisson", "nu", "static Poisson ratio"),
+    let bulk = |s: &mut String| match (r.model.k_0, r.conditional_on_nu) {
+        (Some(k), _) => s.push_str(&format!("k_0 = {k:e}    # Pa, fixed\n")),
+        (None, Some(nu)) => s.push_str(&format!(
+            "poisson = {nu:e}    # not determined by the data: the moduli above hold for this \
+             value only\n"
+        )),
+        (None, None) => line(s, "poisson", "nu", "static Poisson ratio"),
     };
     match r.model.kind {
         ModelKind::StandardSolid => {

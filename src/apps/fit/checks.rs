@@ -1,0 +1,127 @@
+//! What a fit's numbers mean beyond their intervals: moduli that hold only for a `nu` the data
+//! do not determine, the goodness of fit, and data that no viscoelastic solid explains.
+
+use super::{Data, FitResult, ParamKind};
+
+/// p-value below which the model is said not to fit the data (with standard deviations
+/// given).
+pub const GOODNESS_P_MIN: f64 = 0.01;
+
+/// Chi-square goodness of fit, with standard deviations given.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Goodness {
+    /// `chi^2`, the weighted sum of squared residuals.
+    pub chi2: f64,
+    /// Degrees of freedom `n - rank`.
+    pub dof: usize,
+    /// `P(X >= chi^2)` for `X ~ chi^2(dof)`.
+    pub p_value: f64,
+}
+
+/// The goodness of fit of `r` when every standard deviation was given (the residuals are then
+/// standard normal at the truth); `None` otherwise or without degrees of freedom.
+pub fn goodness(r: &FitResult) -> Option<Goodness> {
+    use statrs::distribution::{ChiSquared, ContinuousCDF};
+    if r.noise_scale != Some(1.0) || r.dof == 0 {
+        return None;
+    }
+    let chi2: f64 = r.residuals.iter().map(|x| x.weighted * x.weighted).sum();
+    let p_value = ChiSquared::new(r.dof as f64).ok()?.sf(chi2);
+    Some(Goodness {
+        chi2,
+        dof: r.dof,
+        p_value,
+    })
+}
+
+/// Drops where the CoR rises with velocity by more than its noise: a linear viscoelastic solid
+/// hit harder dissipates a larger share (its CoR falls with `v0` from the relaxed limit to its
+/// minimum near `p3 = 1`, and rises again only far beyond it, towards the glassy limit), so a
+/// CoR that rises over the measured range points to another material (a hydrogel, a foam, an
+/// adhesive surface) or to the glassy side of the minimum.
+pub fn rising_cor(data: &Data) -> Option<String> {
+    let mut obs: Vec<_> = data.observations.iter().collect();
+    if obs.len() < 3 {
+        return None;
+    }
+    obs.sort_by(|a, b| a.v0.total_cmp(&b.v0));
+    // slope of the least-squares line of e against ln v0, against its standard error
+    let n = obs.len() as f64;
+    let x: Vec<f64> = obs.iter().map(|o| o.v0.ln()).collect();
+    let y: Vec<f64> = obs.iter().map(|o| o.cor).collect();
+    let (mx, my) = (x.iter().sum::<f64>() / n, y.iter().sum::<f64>() / n);
+    let sxx: f64 = x.iter().map(|a| (a - mx).powi(2)).sum();
+    if !(sxx > 0.0) {
+        return None;
+    }
+    let slope = x
+        .iter()
+        .zip(&y)
+        .map(|(a, b)| (a - mx) * (b - my))
+        .sum::<f64>()
+        / sxx;
+    let rss: f64 = x
+        .iter()
+        .zip(&y)
+        .map(|(a, b)| (b - my - slope * (a - mx)).powi(2))
+        .sum();
+    let se = (rss / (n - 2.0) / sxx).sqrt();
+    (slope > 0.0 && slope > 3.0 * se).then(|| {
+        format!(
+            "the CoR rises with impact velocity over the data (slope {slope:.3} per e-fold of v0, \
+             {:.1} standard errors): a linear viscoelastic solid's CoR falls with v0 up to its \
+             minimum, so these data come from another material (a hydrogel, a foam, an adhesive \
+             contact) or from far beyond the minimum",
+            slope / se
+        )
+    })
+}
+
+/// When `nu` was fitted but the data do not determine it, every fitted modulus and viscosity
+/// holds only for the `nu` of the estimate: mark them not identifiable, conditional on it.
+pub fn condition_on_nu(r: &mut FitResult) {
+    let Some(inu) = r.model.index("nu") else {
+        return;
+    };
+    let nu = &r.parameters[inu];
+    if nu.fixed || nu.identifiable {
+        return;
+    }
+    let value = r.values[inu];
+    r.conditional_on_nu = Some(value);
+    for (e, p) in r.parameters.iter_mut().zip(&r.model.params) {
+        if e.fixed || p.kind == ParamKind::Poisson || e.value.is_none() {
+            continue;
+        }
+        e.identifiable = false;
+        let why = format!(
+            "conditional on nu = {value:.4}, which the data do not determine: with another nu \
+             the moduli that fit these data differ"
+        );
+        e.note = if e.note.is_empty() {
+            why
+        } else {
+            format!("{why}; {}", e.note)
+        };
+    }
+}
+
+/// Apply the checks to `r`: conditional moduli, goodness of fit and its warning, rising CoRs.
+pub fn apply(r: &mut FitResult) {
+    condition_on_nu(r);
+    r.goodness = goodness(r);
+    if let Some(g) = r.goodness.filter(|g| g.p_value < GOODNESS_P_MIN) {
+        r.warnings.push(format!(
+            "the model does not fit the data: chi^2 = {:.3} on {} degrees of freedom, p = {:.2e} \
+             (below {GOODNESS_P_MIN}); the intervals assume it does",
+            g.chi2, g.dof, g.p_value
+        ));
+    }
+    r.warnings.extend(rising_cor(&r.data));
+    if let Some(nu) = r.conditional_on_nu {
+        r.verdict = format!(
+            "{}; the moduli hold only for nu = {nu:.4}",
+            super::verdict(&r.parameters, &r.groups)
+        );
+    }
+}
