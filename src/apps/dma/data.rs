@@ -84,6 +84,9 @@ pub fn read(path: &Path, modulus: ModulusKind, nu: f64) -> Result<DmaData> {
     parse(text, &file, modulus, nu)
 }
 
+/// One data row: temperature (°C), omega (rad/s), G', G'' (Pa, shear) and its line.
+type Row = (Option<f64>, f64, f64, f64, u64);
+
 const COLUMNS: [&str; 5] = ["frequency", "omega", "storage", "loss", "temperature"];
 
 /// Parse CSV `text` (named `file` in messages) into isotherms in shear (see the module docs).
@@ -100,17 +103,13 @@ pub fn parse(text: &str, file: &str, modulus: ModulusKind, nu: f64) -> Result<Dm
         .flexible(false)
         .comment(Some(b'#'))
         .from_reader(text.as_bytes());
-    let header_line = reader.position().line().max(1);
+    let header_line = line_of(text, 0);
     let header: Vec<String> = reader
         .headers()
         .map_err(|e| err(header_line, escape_text(&e.to_string())))?
         .iter()
         .map(str::to_string)
         .collect();
-    let header_line = text
-        .lines()
-        .position(|l| !l.trim().is_empty() && !l.starts_with('#'))
-        .map_or(1, |k| k as u64 + 1);
     let mut col = [None; 5];
     for (j, h) in header.iter().enumerate() {
         match COLUMNS.iter().position(|c| c == h) {
@@ -162,13 +161,13 @@ pub fn parse(text: &str, file: &str, modulus: ModulusKind, nu: f64) -> Result<Dm
         ModulusKind::Tensile => 1.0 / (2.0 * (1.0 + nu)),
     };
     // (temperature, omega, G', G'', line)
-    let mut rows: Vec<(Option<f64>, f64, f64, f64, u64)> = Vec::new();
+    let mut rows: Vec<Row> = Vec::new();
     for record in reader.records() {
         let record = record.map_err(|e| {
-            let line = e.position().map_or(0, |p| p.line());
+            let line = e.position().map_or(0, |p| line_of(text, p.byte()));
             err(line, escape_text(&e.to_string()))
         })?;
-        let line = record.position().map_or(0, |p| p.line());
+        let line = record.position().map_or(0, |p| line_of(text, p.byte()));
         let number = |j: usize, name: &str, positive: bool| -> Result<f64> {
             let s = record.get(j).unwrap_or("");
             if s.is_empty() {
@@ -248,7 +247,7 @@ pub fn parse(text: &str, file: &str, modulus: ModulusKind, nu: f64) -> Result<Dm
             .total_cmp(&b.0.unwrap_or(0.0))
             .then(a.4.cmp(&b.4))
     });
-    let mut groups: Vec<Vec<(Option<f64>, f64, f64, f64, u64)>> = Vec::new();
+    let mut groups: Vec<Vec<Row>> = Vec::new();
     for r in rows.iter().copied() {
         match groups.last_mut() {
             Some(g) if r.0.unwrap_or(0.0) - g[0].0.unwrap_or(0.0) <= ISOTHERM_TOLERANCE => {
@@ -313,6 +312,36 @@ pub fn parse(text: &str, file: &str, modulus: ModulusKind, nu: f64) -> Result<Dm
     })
 }
 
+/// The 1-based physical line (ends: `\n`, `\r\n`, lone `\r`) of the record that the csv
+/// reader places at `byte`: its position points before the empty and comment lines it skipped.
+fn line_of(text: &str, byte: u64) -> u64 {
+    let b = text.as_bytes();
+    let mut i = (byte as usize).min(b.len());
+    loop {
+        let at_line_start = i == 0 || matches!(b[i - 1], b'\n' | b'\r');
+        match b.get(i) {
+            Some(b'\n' | b'\r') => i += 1,
+            Some(b'#') if at_line_start => {
+                while i < b.len() && !matches!(b[i], b'\n' | b'\r') {
+                    i += 1;
+                }
+            }
+            _ => break,
+        }
+    }
+    let mut line = 1;
+    let mut k = 0;
+    while k < i {
+        match b[k] {
+            b'\n' => line += 1,
+            b'\r' if b.get(k + 1) != Some(&b'\n') => line += 1,
+            _ => {}
+        }
+        k += 1;
+    }
+    line
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -327,6 +356,23 @@ mod tests {
         let p = d.isotherms[0].points[0];
         assert!((p.0 - std::f64::consts::TAU).abs() < 1e-12 && (p.1 - 1e6).abs() < 1e-6);
         assert!((d.isotherms[0].temperature.unwrap() - 20.1).abs() < 1e-12);
+    }
+
+    #[test]
+    fn line_numbers_count_comments_blank_lines_and_every_line_end() {
+        let e = parse(
+            "# c\r\n\nomega,storage,loss\r1,1e6,1e5\n\n# d\n2,x,1e5\n",
+            "d.csv",
+            ModulusKind::Shear,
+            0.5,
+        )
+        .unwrap_err();
+        assert!(e.to_string().starts_with("d.csv:7: storage = 'x'"), "{e}");
+        let e = parse("# c\nomega,storage\n", "d.csv", ModulusKind::Shear, 0.5).unwrap_err();
+        assert!(
+            e.to_string().starts_with("d.csv:2: missing column 'loss'"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -256,7 +256,6 @@ pub fn dma_svg(path: &Path, r: &PronyReport) -> Result<String> {
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
             (a.min(x), b.max(x))
         });
-    let (x0, x1) = ((x0 - 0.3).floor(), (x1 + 0.3).ceil());
     let ly: Vec<f64> = pts
         .iter()
         .flat_map(|p| [p.2.log10(), p.3.log10()])
@@ -267,9 +266,12 @@ pub fn dma_svg(path: &Path, r: &PronyReport) -> Result<String> {
             (a.min(x), b.max(x))
         });
     let (y0, y1) = ((y0 - 0.2).floor(), (y1 + 0.2).ceil());
+    // the fit over the data's window only: beyond it the series is an extrapolation
+    let (w0, w1) = (x0, x1);
+    let (x0, x1) = ((x0 - 0.3).floor(), (x1 + 0.3).ceil());
     let curve: Vec<(f64, f64, f64)> = (0..=400)
         .map(|k| {
-            let lw = x0 + (x1 - x0) * k as f64 / 400.0;
+            let lw = w0 + (w1 - w0) * k as f64 / 400.0;
             let w = 10f64.powf(lw);
             (lw, r.series.storage(w), r.series.loss(w))
         })
@@ -362,7 +364,11 @@ pub fn dma_svg(path: &Path, r: &PronyReport) -> Result<String> {
             ))
             .map_err(|x| e(&x))?
             .label("G″ fit")
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], black));
+            .legend(move |(x, y)| {
+                EmptyElement::at((x, y))
+                    + PathElement::new(vec![(0, 0), (7, 0)], black)
+                    + PathElement::new(vec![(11, 0), (18, 0)], black)
+            });
         let green = RGBColor(0, 140, 60).stroke_width(2);
         chart
             .draw_secondary_series(LineSeries::new(
@@ -374,20 +380,12 @@ pub fn dma_svg(path: &Path, r: &PronyReport) -> Result<String> {
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], green));
         let grey = RGBColor(90, 90, 90);
         chart
-            .draw_series(std::iter::once(Circle::new(
-                (f64::NAN, f64::NAN),
-                3,
-                grey.filled(),
-            )))
+            .draw_series(Vec::<Circle<(f64, f64), i32>>::new())
             .map_err(|x| e(&x))?
-            .label("G′ data (colour: temperature)")
+            .label("G′ data (colour: temperature, blue cold to red hot)")
             .legend(move |(x, y)| Circle::new((x + 9, y), 3, grey.filled()));
         chart
-            .draw_series(std::iter::once(TriangleMarker::new(
-                (f64::NAN, f64::NAN),
-                4,
-                grey,
-            )))
+            .draw_series(Vec::<TriangleMarker<(f64, f64), i32>>::new())
             .map_err(|x| e(&x))?
             .label("G″ data")
             .legend(move |(x, y)| TriangleMarker::new((x + 9, y), 4, grey));
@@ -437,6 +435,7 @@ pub fn dma_svg(path: &Path, r: &PronyReport) -> Result<String> {
                 .build_cartesian_2d(t0..t1, (s0 - spad)..(s1 + spad))
                 .map_err(|x| e(&x))?;
             c2.configure_mesh()
+                .x_label_formatter(&|t| format!("{t:.0}"))
                 .x_desc("temperature T (°C)")
                 .y_desc("log₁₀ a_T")
                 .light_line_style(WHITE)
