@@ -266,32 +266,8 @@ enum Command {
         json: bool,
     },
     /// Prony series and shift law from DMA data (CSV frequency|omega,storage,loss[,temperature]);
-    /// writes DIR/material.toml, prony.csv, master.csv and dma.svg.
-    Prony {
-        /// The DMA data file.
-        data: PathBuf,
-        /// auto, or at most N terms.
-        #[arg(long, default_value = "auto")]
-        terms: String,
-        /// shear (G', G'') or tensile (E', E'', converted with --nu).
-        #[arg(long, default_value = "shear")]
-        modulus: String,
-        /// Poisson ratio (tensile conversion, default 0.5; bulk of material.toml).
-        #[arg(long, allow_hyphen_values = true)]
-        nu: Option<f64>,
-        /// Reference temperature (°C); default: the isotherm nearest 25 °C.
-        #[arg(long = "t-ref", allow_hyphen_values = true)]
-        t_ref: Option<f64>,
-        /// Shift law: wlf, arrhenius or none.
-        #[arg(long, default_value = "wlf")]
-        shift: String,
-        /// Output folder.
-        #[arg(long, default_value = "out")]
-        out: PathBuf,
-        /// Print one JSON object and nothing else on stdout.
-        #[arg(long)]
-        json: bool,
-    },
+    /// writes DIR/material.toml, prony.csv, master.csv and dma.svg (docs/dma.md).
+    Prony(mdr_impact::apps::dma::PronyArgs),
     /// Round trip of fit: synthetic drop tests from a known material with noise, fitted again;
     /// prints the coverage of the 95 % intervals (with --report, fills its section of the report).
     FitStudy {
@@ -349,32 +325,15 @@ fn run(cli: Cli) -> Result<(), Error> {
         scene: None,
         json: false,
     }) {
-        Command::Prony {
-            data,
-            terms,
-            modulus,
-            nu,
-            t_ref,
-            shift,
-            out,
-            json,
-        } => {
+        Command::Prony(args) => {
             use mdr_impact::apps::dma;
-            let opts = dma::PronyOptions {
-                data,
-                max_terms: dma::parse_terms(&terms)?,
-                modulus: modulus.parse()?,
-                nu,
-                t_ref,
-                shift: shift.parse()?,
-            };
-            let report = dma::run(&opts)?;
-            dma::write_outputs(&out, &report)?;
-            if json {
+            let report = dma::run(&args.options()?)?;
+            dma::write_outputs(&args.out, &report)?;
+            if args.json {
                 println!("{}", dma::json(&report));
             } else {
                 print!("{}", dma::summary(&report));
-                println!("{:<28}{}", "written", out.display());
+                println!("{:<28}{}", "written", args.out.display());
             }
             Ok(())
         }
