@@ -265,6 +265,9 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Prony series and shift law from DMA data (CSV frequency|omega,storage,loss[,temperature]);
+    /// writes DIR/material.toml, prony.csv, master.csv and dma.svg (docs/dma.md).
+    Prony(mdr_impact::apps::dma::PronyArgs),
     /// Round trip of fit: synthetic drop tests from a known material with noise, fitted again;
     /// prints the coverage of the 95 % intervals (with --report, fills its section of the report).
     FitStudy {
@@ -322,6 +325,18 @@ fn run(cli: Cli) -> Result<(), Error> {
         scene: None,
         json: false,
     }) {
+        Command::Prony(args) => {
+            use mdr_impact::apps::dma;
+            let report = dma::run(&args.options()?)?;
+            dma::write_outputs(&args.out, &report)?;
+            if args.json {
+                println!("{}", dma::json(&report));
+            } else {
+                print!("{}", dma::summary(&report));
+                println!("{:<28}{}", "written", args.out.display());
+            }
+            Ok(())
+        }
         Command::Run { scene, json } => {
             let scene = match scene {
                 Some(p) => Scene::load(&p)?,

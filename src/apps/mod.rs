@@ -7,5 +7,6 @@
 pub mod batch;
 pub mod curve;
 pub mod dem;
+pub mod dma;
 pub mod fit;
 pub mod sweep;

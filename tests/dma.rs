@@ -1,0 +1,276 @@
+//! `prony`: DMA data to a Prony series and a shift law.
+//!
+//! Synthetic data from a known smooth 20-term spectrum with a known WLF shift and 1 %
+//! multiplicative noise ([`synthetic`]): the recovered shift factors, the fit and the CoR of the
+//! fitted material against the true one at several temperatures; the committed example
+//! `scenes/dma_example.csv` (regenerate: `cargo test --release --test dma -- --ignored
+//! regenerate_example`); the command on it and on bad data.
+
+mod common;
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use mdr_impact::apps::dma::{self, data, prony_fit::PronySeries, shift::ShiftLaw};
+use mdr_impact::io::scene::Scene;
+use mdr_impact::model::material::rheology::{BulkRheology, ShearProny};
+use mdr_impact::rng::SplitMix64;
+use mdr_impact::{solve, GeneralMaterial, Impact, SolveOptions, Sphere};
+
+/// The true material: `g_inf = 1 MPa` and 20 terms, `tau_i` log-spaced from 1e-6 s to 1e2 s,
+/// `g_i = 2.0e7 Pa (tau_i / 1e-6 s)^(-0.4)` (a power-law transition; glassy ~0.16 GPa), at 20 °C.
+fn truth() -> PronySeries {
+    let terms = (0..20)
+        .map(|k| {
+            let tau = 1e-6 * 10f64.powf(8.0 * k as f64 / 19.0);
+            (2.0e7 * (tau / 1e-6).powf(-0.4), tau)
+        })
+        .collect();
+    PronySeries {
+        g_inf: 1.0e6,
+        terms,
+    }
+}
+
+/// The true shift law: WLF, c1 = 8, c2 = 150 K at 20 °C.
+fn true_law() -> ShiftLaw {
+    ShiftLaw::wlf(8.0, 150.0, 20.0).unwrap()
+}
+
+/// CSV text of synthetic DMA data: `temperatures` (°C), `per_decade` frequencies per decade
+/// from 0.01 Hz to 100 Hz, `G'` and `G''` of [`truth`] at `omega a_T`, each times
+/// `(1 + noise n)` with a standard normal `n` from `SplitMix64::new(seed)`.
+fn synthetic(temperatures: &[f64], per_decade: usize, noise: f64, seed: u64) -> String {
+    let g = truth();
+    let law = true_law();
+    let mut rng = SplitMix64::new(seed);
+    let mut s = String::from("temperature,frequency,storage,loss\n");
+    for &t in temperatures {
+        let a = 10f64.powf(law.log10_a(t).unwrap());
+        let n = 4 * per_decade;
+        for k in 0..=n {
+            let f = 10f64.powf(-2.0 + 4.0 * k as f64 / n as f64);
+            let w = std::f64::consts::TAU * f * a;
+            let g1 = g.storage(w) * (1.0 + noise * rng.normal());
+            let g2 = g.loss(w) * (1.0 + noise * rng.normal());
+            let _ = writeln!(s, "{t},{f:.6e},{g1:.6e},{g2:.6e}");
+        }
+    }
+    s
+}
+
+fn grid() -> Vec<f64> {
+    (0..12).map(|k| -30.0 + 10.0 * k as f64).collect()
+}
+
+/// CoR of a 10 mm steel ball (4.11 g) at 1 m/s on the incompressible `series`.
+fn cor(series: &PronySeries) -> f64 {
+    let shear = ShearProny::new(series.g_inf, &series.terms).unwrap();
+    let m = GeneralMaterial::new(shear, BulkRheology::Incompressible).unwrap();
+    let impact = Impact::with_general(Sphere::new(4.11e-3, 5.0e-3).unwrap(), 1.0, m).unwrap();
+    solve(&impact, &SolveOptions::default()).unwrap().cor
+}
+
+fn fit_text(text: &str, opts: &dma::PronyOptions) -> dma::PronyReport {
+    let d = data::parse(text, "synthetic.csv", data::ModulusKind::Shear, 0.5).unwrap();
+    dma::fit(&d, opts).unwrap()
+}
+
+#[test]
+fn shifts_fit_and_cor_from_noisy_synthetic_data() {
+    let start = std::time::Instant::now();
+    let r = fit_text(
+        &synthetic(&grid(), 5, 0.01, 1),
+        &dma::PronyOptions::new("synthetic.csv"),
+    );
+    let elapsed = start.elapsed();
+    let law = true_law();
+    assert_eq!(r.t_ref, Some(20.0));
+    let mut table = String::from("T (°C) | true log10 a_T | pairwise err | refined err\n");
+    let mut worst: f64 = 0.0;
+    for (k, iso) in r.isotherms.iter().enumerate() {
+        let t = iso.temperature.unwrap();
+        let want = law.log10_a(t).unwrap();
+        let (e0, e1) = (r.log10_shift_pairwise[k] - want, r.log10_shift[k] - want);
+        worst = worst.max(e1.abs());
+        let _ = writeln!(table, "{t:6.1} | {want:+8.4} | {e0:+.4} | {e1:+.4}");
+    }
+    println!(
+        "{table}rms_rel_error {:.4e}, {} terms, g_inf {:.4e}, fit {:?}",
+        r.rms_rel_error,
+        r.series.terms.len(),
+        r.series.g_inf,
+        elapsed
+    );
+    println!("law {:?}", r.law);
+    assert!(worst < 0.05, "shift error {worst} decades\n{table}");
+    // 1 % noise on each modulus: the fit cannot do better than ~0.01, should not do much worse
+    assert!(r.rms_rel_error < 0.015, "{}", r.rms_rel_error);
+    assert!(r.series.g_inf > 0.0);
+    // the CoR of the fitted material with the fitted law against the truth
+    let fitted_law = r.law.as_ref().unwrap().law;
+    let mut worst_cor: f64 = 0.0;
+    for t in [-20.0, 0.0, 20.0, 40.0, 60.0, 80.0] {
+        let true_cor = cor(&truth().shifted(10f64.powf(law.log10_a(t).unwrap())));
+        let fit_cor = cor(&r.series.shifted(10f64.powf(fitted_law.log10_a(t).unwrap())));
+        let err = common::rel_err(fit_cor, true_cor);
+        println!("T = {t:5.1} °C: CoR true {true_cor:.5}, fitted {fit_cor:.5}, rel err {err:+.2e}");
+        worst_cor = worst_cor.max(err.abs());
+    }
+    assert!(worst_cor < 0.01, "CoR error {worst_cor}");
+}
+
+#[test]
+fn a_reference_temperature_between_isotherms_is_fitted_with_an_offset() {
+    let mut opts = dma::PronyOptions::new("synthetic.csv");
+    opts.t_ref = Some(25.0);
+    let r = fit_text(&synthetic(&grid(), 5, 0.01, 2), &opts);
+    let law = true_law();
+    let at25 = law.log10_a(25.0).unwrap();
+    for (k, iso) in r.isotherms.iter().enumerate() {
+        let want = law.log10_a(iso.temperature.unwrap()).unwrap() - at25;
+        assert!(
+            (r.log10_shift[k] - want).abs() < 0.05,
+            "{k}: {} vs {want}",
+            r.log10_shift[k]
+        );
+    }
+    assert_eq!(r.law.unwrap().law.t_ref(), 25.0);
+}
+
+#[test]
+fn arrhenius_and_a_single_isotherm() {
+    let mut opts = dma::PronyOptions::new("synthetic.csv");
+    opts.shift = dma::shift::LawKind::Arrhenius;
+    let r = fit_text(
+        &synthetic(&[40.0, 50.0, 60.0, 70.0, 80.0], 5, 0.0, 3),
+        &opts,
+    );
+    assert_eq!(r.law.unwrap().law.kind(), "arrhenius");
+    // one isotherm, no temperature column: no shift
+    let text = synthetic(&[20.0], 5, 0.0, 4)
+        .lines()
+        .map(|l| l.split_once(',').unwrap().1.to_string() + "\n")
+        .collect::<String>();
+    let r = fit_text(&text, &dma::PronyOptions::new("one.csv"));
+    assert_eq!(r.isotherms.len(), 1);
+    assert!(r.law.is_none() && r.t_ref.is_none());
+    assert!(r.rms_rel_error < 0.01, "{}", r.rms_rel_error);
+    let cap = {
+        let mut o = dma::PronyOptions::new("one.csv");
+        o.max_terms = Some(4);
+        fit_text(&text, &o)
+    };
+    assert!(cap.series.terms.len() <= 4);
+}
+
+fn example() -> String {
+    let head = "# Synthetic DMA data (mdr-impact tests/dma.rs, regenerate_example): shear moduli of a\n\
+                # 20-term power-law spectrum (g_inf = 1 MPa) with a WLF shift (c1 = 8, c2 = 150 K at\n\
+                # 20 °C), 6 temperatures, 0.01 to 100 Hz at 4 points per decade, 1 % noise (seed 7).\n";
+    head.to_string() + &synthetic(&[-20.0, 0.0, 20.0, 40.0, 60.0, 80.0], 4, 0.01, 7)
+}
+
+fn example_path() -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/dma_example.csv")
+}
+
+#[test]
+#[ignore = "writes scenes/dma_example.csv"]
+fn regenerate_example() {
+    std::fs::write(example_path(), example()).unwrap();
+}
+
+#[test]
+fn committed_example_is_current() {
+    assert_eq!(std::fs::read_to_string(example_path()).unwrap(), example());
+}
+
+#[test]
+fn cli_on_the_example_writes_every_output_and_a_loadable_material() {
+    let dir = tempfile::tempdir().unwrap();
+    let ex = example_path();
+    let o = common::run(
+        &["prony", ex.to_str().unwrap(), "--out", "res", "--json"],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    for key in [
+        "g_inf",
+        "terms",
+        "shift",
+        "log10_shift",
+        "rms_rel_error",
+        "warnings",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}: {v}");
+    }
+    assert_eq!(v["shift"]["kind"], "wlf");
+    assert_eq!(v["log10_shift"].as_array().unwrap().len(), 6);
+    for f in dma::report::OUTPUT_FILES {
+        assert!(dir.path().join("res").join(f).is_file(), "{f}");
+    }
+    // material.toml: the shift table parses as a ShiftLaw; without it, a scene loads and solves
+    let toml_text = std::fs::read_to_string(dir.path().join("res/material.toml")).unwrap();
+    let (material, shift) = toml_text.split_once("[material.shift]").unwrap();
+    let law: ShiftLaw = toml::from_str(shift.lines().nth(1).unwrap()).unwrap();
+    assert_eq!(law.t_ref(), 20.0);
+    let scene = format!(
+        "[sphere]\nmass = 4.11e-3\nradius = 5.0e-3\n\n[impact]\nvelocity = 1.0\n\n{material}"
+    );
+    let scene = Scene::parse(&scene).unwrap();
+    let e = solve(&scene.impact, &scene.options).unwrap().cor;
+    assert!(e > 0.0 && e < 1.0);
+    // prony.csv is a table the scene loader reads
+    let table =
+        mdr_impact::io::prony_table::read_prony_table(&dir.path().join("res/prony.csv")).unwrap();
+    assert_eq!(table.len(), v["terms"].as_array().unwrap().len());
+}
+
+#[test]
+fn cli_refuses_bad_data_in_one_line_and_writes_nothing() {
+    let cases: [(&str, &str); 5] = [
+        ("omega,storage,loss\n1,1e6,1e5\n", "1 data row"),
+        (
+            "omega,storage,loss\n1,1e6,1e5\n2,0,1e5\n",
+            "bad.csv:3: storage = 0e0",
+        ),
+        (
+            "omega,storage,loss\n-1,1e6,1e5\n2,1e6,1e5\n",
+            "omega = -1e0",
+        ),
+        (
+            // two isotherms whose moduli share no values
+            "temperature,omega,storage,loss\n0,1,1e9,1e8\n0,10,2e9,2e8\n0,100,3e9,3e8\n\
+             50,1,1e5,1e4\n50,10,2e5,2e4\n50,100,3e5,3e4\n100,1,1e3,1e2\n100,10,2e3,2e2\n",
+            "do not overlap",
+        ),
+        (
+            "temperature,omega,storage,loss\n0,1,1e6,1e5\n0,2,1e6,1e5\n50,3,1e6,1e5\n",
+            "single frequency",
+        ),
+    ];
+    for (text, want) in cases {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("bad.csv"), text).unwrap();
+        let o = common::run(&["prony", "bad.csv", "--out", "res"], dir.path());
+        let err = common::stderr(&o);
+        assert!(!o.status.success(), "{text}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(want), "{want}: {err}");
+        assert!(!dir.path().join("res").exists(), "{text}");
+    }
+}
+
+#[test]
+fn tensile_data_are_converted_and_noise_level_loss_is_flagged() {
+    let text = "omega,storage,loss\n1,3e6,3e5\n10,6e6,6e5\n100,9e6,9e2\n";
+    let d = data::parse(text, "t.csv", data::ModulusKind::Tensile, 0.5).unwrap();
+    assert!((d.isotherms[0].points[0].1 - 1e6).abs() < 1e-6);
+    assert!(
+        d.warnings.iter().any(|w| w.contains("loss modulus below")),
+        "{:?}",
+        d.warnings
+    );
+}
