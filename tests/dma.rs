@@ -13,9 +13,9 @@ use std::path::Path;
 
 use mdr_impact::apps::dma::{self, data, prony_fit::PronySeries, shift::ShiftLaw};
 use mdr_impact::io::scene::Scene;
-use mdr_impact::model::material::rheology::{BulkRheology, ShearProny};
+use mdr_impact::model::material::{BulkInput, ShearProny};
 use mdr_impact::rng::SplitMix64;
-use mdr_impact::{solve, GeneralMaterial, Impact, SolveOptions, Sphere};
+use mdr_impact::{solve, Impact, Material, SolveOptions, Sphere};
 
 /// The true material: `g_inf = 1 MPa` and 20 terms, `tau_i` log-spaced from 1e-6 s to 1e2 s,
 /// `g_i = 2.0e7 Pa (tau_i / 1e-6 s)^(-0.4)` (a power-law transition; glassy ~0.16 GPa), at 20 °C.
@@ -66,7 +66,7 @@ fn grid() -> Vec<f64> {
 /// CoR of a 10 mm steel ball (4.11 g) at 1 m/s on the incompressible `series`.
 fn cor(series: &PronySeries) -> f64 {
     let shear = ShearProny::new(series.g_inf, &series.terms).unwrap();
-    let m = GeneralMaterial::new(shear, BulkRheology::Incompressible).unwrap();
+    let m = Material::general(shear, BulkInput::Incompressible).unwrap();
     let impact = Impact::with_general(Sphere::new(4.11e-3, 5.0e-3).unwrap(), 1.0, m).unwrap();
     solve(&impact, &SolveOptions::default()).unwrap().cor
 }
