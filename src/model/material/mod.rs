@@ -18,6 +18,7 @@ pub mod carson;
 pub mod network;
 pub mod prony;
 pub mod rheology;
+pub mod shift;
 pub mod standard;
 
 pub use network::{ElementModel, GeneralNetwork, StackedNetwork};

@@ -1,0 +1,245 @@
+//! Temperature: the shift laws of a thermorheologically simple material (docs/theory.md §13).
+//! At temperature `T` every relaxation time of shear and bulk is `a_T` times its value at the
+//! reference temperature; `log10 a_T > 0` below it (slower, stiffer). A scene gives the law as
+//! `[material.shift]`, `mdr-impact prony` fits it to DMA isotherms (`crate::apps::dma`).
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::{check, Error, Result};
+use crate::model::material::{BulkInput, BulkProny, BulkRheology, Material, ShearProny};
+
+/// Molar gas constant `R` (J/(mol K)), CODATA 2018 (exact).
+pub const GAS_CONSTANT: f64 = 8.314_462_618;
+
+/// Absolute zero in °C: `T_K = T_C + 273.15`.
+pub const ZERO_CELSIUS_K: f64 = 273.15;
+
+/// A shift law `log10 a_T(T)`: temperatures in °C, `a_T` multiplies every relaxation time.
+///
+/// Serialised (TOML, serde) in exactly the shape of a scene's `[material.shift]` table:
+///
+/// ```toml
+/// [material.shift]
+/// wlf = { c1 = 8.86, c2 = 101.6, t_ref = 25.0 }           # °C
+/// # arrhenius = { activation_energy = 2.0e5, t_ref = 25.0 }  # J/mol, °C
+/// ```
+///
+/// Deserialising validates (unknown keys, non-finite or out-of-range constants are refused).
+///
+/// ```
+/// # use mdr_impact::model::material::shift::ShiftLaw;
+/// let law: ShiftLaw = toml::from_str("wlf = { c1 = 8.86, c2 = 101.6, t_ref = 25.0 }").unwrap();
+/// // WLF at T = t_ref + 10: -8.86 * 10 / (101.6 + 10)
+/// assert!((law.log10_a(35.0).unwrap() + 0.793_907).abs() < 1e-6);
+/// assert!(law.log10_a(25.0 - 101.6).is_err()); // at or below t_ref - c2: refused
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase", try_from = "RawShiftLaw")]
+pub enum ShiftLaw {
+    /// Williams–Landel–Ferry (1955): `log10 a_T = -c1 (T - t_ref) / (c2 + T - t_ref)`, valid
+    /// for `T > t_ref - c2`; `c1 > 0` (dimensionless), `c2 > 0` (K), `t_ref` (°C).
+    Wlf {
+        /// `C1` (dimensionless), `0 < c1 < inf`.
+        c1: f64,
+        /// `C2` (K), `0 < c2 < inf`.
+        c2: f64,
+        /// Reference temperature (°C).
+        t_ref: f64,
+    },
+    /// Arrhenius: `log10 a_T = E_a / (R ln 10) (1/T_K - 1/T_ref,K)` with absolute temperatures.
+    Arrhenius {
+        /// Activation energy `E_a` (J/mol), `0 < E_a < inf`.
+        activation_energy: f64,
+        /// Reference temperature (°C).
+        t_ref: f64,
+    },
+}
+
+/// The unvalidated serde form of [`ShiftLaw`].
+#[derive(Deserialize)]
+#[serde(rename_all = "lowercase", deny_unknown_fields)]
+enum RawShiftLaw {
+    Wlf { c1: f64, c2: f64, t_ref: f64 },
+    Arrhenius { activation_energy: f64, t_ref: f64 },
+}
+
+impl TryFrom<RawShiftLaw> for ShiftLaw {
+    type Error = Error;
+    fn try_from(raw: RawShiftLaw) -> Result<Self> {
+        match raw {
+            RawShiftLaw::Wlf { c1, c2, t_ref } => ShiftLaw::wlf(c1, c2, t_ref),
+            RawShiftLaw::Arrhenius {
+                activation_energy,
+                t_ref,
+            } => ShiftLaw::arrhenius(activation_energy, t_ref),
+        }
+    }
+}
+
+impl ShiftLaw {
+    /// Validated WLF law: `0 < c1 < inf`, `0 < c2 < inf` (K), `t_ref` finite and above
+    /// absolute zero (°C).
+    pub fn wlf(c1: f64, c2: f64, t_ref: f64) -> Result<Self> {
+        check("c1", c1, c1 > 0.0, "0 < c1 < inf")?;
+        check("c2", c2, c2 > 0.0, "0 < c2 < inf (K)")?;
+        check_t_ref(t_ref)?;
+        Ok(ShiftLaw::Wlf { c1, c2, t_ref })
+    }
+
+    /// Validated Arrhenius law: `0 < activation_energy < inf` (J/mol), `t_ref` finite and above
+    /// absolute zero (°C).
+    pub fn arrhenius(activation_energy: f64, t_ref: f64) -> Result<Self> {
+        check(
+            "activation_energy",
+            activation_energy,
+            activation_energy > 0.0,
+            "0 < activation_energy < inf (J/mol)",
+        )?;
+        check_t_ref(t_ref)?;
+        Ok(ShiftLaw::Arrhenius {
+            activation_energy,
+            t_ref,
+        })
+    }
+
+    /// The reference temperature (°C), where `a_T = 1`.
+    pub fn t_ref(&self) -> f64 {
+        match *self {
+            ShiftLaw::Wlf { t_ref, .. } | ShiftLaw::Arrhenius { t_ref, .. } => t_ref,
+        }
+    }
+
+    /// `log10 a_T` at `t` (°C). WLF refuses `t <= t_ref - c2` (its singularity and beyond),
+    /// Arrhenius `t <= -273.15 °C`, both with [`Error::OutOfRange`] on the field `temperature`.
+    pub fn log10_a(&self, t: f64) -> Result<f64> {
+        match *self {
+            ShiftLaw::Wlf { c1, c2, t_ref } => {
+                let d = check(
+                    "temperature",
+                    t,
+                    t - t_ref + c2 > 0.0,
+                    "T > t_ref - c2 (°C; WLF is singular at t_ref - c2)",
+                )? - t_ref;
+                Ok(-c1 * d / (c2 + d))
+            }
+            ShiftLaw::Arrhenius {
+                activation_energy,
+                t_ref,
+            } => {
+                let tk = check("temperature", t, t > -ZERO_CELSIUS_K, "T > -273.15 °C")?
+                    + ZERO_CELSIUS_K;
+                let rk = t_ref + ZERO_CELSIUS_K;
+                Ok(activation_energy / (GAS_CONSTANT * std::f64::consts::LN_10)
+                    * (1.0 / tk - 1.0 / rk))
+            }
+        }
+    }
+
+    /// The law's name in the scene table and the JSON output: `wlf` or `arrhenius`.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            ShiftLaw::Wlf { .. } => "wlf",
+            ShiftLaw::Arrhenius { .. } => "arrhenius",
+        }
+    }
+
+    /// The law as the JSON object of `prony --json`: `{"kind": "wlf", "c1", "c2", "t_ref"}` or
+    /// `{"kind": "arrhenius", "activation_energy", "t_ref"}`.
+    pub fn json(&self) -> serde_json::Value {
+        match *self {
+            ShiftLaw::Wlf { c1, c2, t_ref } => {
+                serde_json::json!({"kind": "wlf", "c1": c1, "c2": c2, "t_ref": t_ref})
+            }
+            ShiftLaw::Arrhenius {
+                activation_energy,
+                t_ref,
+            } => serde_json::json!({
+                "kind": "arrhenius",
+                "activation_energy": activation_energy,
+                "t_ref": t_ref,
+            }),
+        }
+    }
+
+    /// The body of a `[material.shift]` table: one line, `wlf = { ... }` or
+    /// `arrhenius = { ... }`, numbers in shortest round-trip form.
+    pub fn toml_line(&self) -> String {
+        match *self {
+            ShiftLaw::Wlf { c1, c2, t_ref } => {
+                format!("wlf = {{ c1 = {c1:?}, c2 = {c2:?}, t_ref = {t_ref:?} }}")
+            }
+            ShiftLaw::Arrhenius {
+                activation_energy,
+                t_ref,
+            } => format!(
+                "arrhenius = {{ activation_energy = {activation_energy:?}, t_ref = {t_ref:?} }}"
+            ),
+        }
+    }
+}
+
+fn check_t_ref(t_ref: f64) -> Result<f64> {
+    check(
+        "t_ref",
+        t_ref,
+        t_ref > -ZERO_CELSIUS_K,
+        "-273.15 < t_ref < inf (°C)",
+    )
+}
+
+impl Material {
+    /// This material at the shift factor `a_t` (`0 < a_t < inf`): every relaxation time of
+    /// shear and bulk multiplied by `a_t`, every modulus unchanged (thermorheological
+    /// simplicity). `a_t = 1` gives the material back unchanged.
+    pub fn time_shifted(&self, a_t: f64) -> Result<Material> {
+        check("a_T", a_t, a_t > 0.0, "0 < a_T < inf")?;
+        if a_t == 1.0 {
+            return Ok(self.clone());
+        }
+        let scale = |terms: &[(f64, f64)]| -> Vec<(f64, f64)> {
+            terms.iter().map(|&(g, tau)| (g, tau * a_t)).collect()
+        };
+        let shear = ShearProny::new(self.shear().g_inf(), &scale(self.shear().terms()))?;
+        let bulk = match self.bulk() {
+            BulkRheology::Incompressible => BulkInput::Incompressible,
+            BulkRheology::Elastic(k) => BulkInput::Elastic(*k),
+            BulkRheology::Prony(p) => {
+                BulkInput::Prony(BulkProny::new(p.k_inf(), &scale(p.terms()))?)
+            }
+        };
+        Material::general(shear, bulk)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn time_shift_scales_every_time_and_no_modulus() {
+        let shear = ShearProny::new(1.0e6, &[(5.0e6, 1.0e-5), (2.0e6, 1.0e-3)]).unwrap();
+        let bulk = BulkInput::Prony(BulkProny::new(1.0e9, &[(5.0e8, 1.0e-4)]).unwrap());
+        let m = Material::general(shear, bulk).unwrap();
+        let a = 10f64.powf(1.7);
+        let shifted = m.time_shifted(a).unwrap();
+        // the hand-shifted series, to the last bit
+        let hand = Material::general(
+            ShearProny::new(1.0e6, &[(5.0e6, 1.0e-5 * a), (2.0e6, 1.0e-3 * a)]).unwrap(),
+            BulkInput::Prony(BulkProny::new(1.0e9, &[(5.0e8, 1.0e-4 * a)]).unwrap()),
+        )
+        .unwrap();
+        assert_eq!(shifted.shear().terms(), hand.shear().terms());
+        let g0 = m.equivalent_relaxation().unwrap();
+        let g1 = shifted.equivalent_relaxation().unwrap();
+        for t in [0.0, 1e-6, 1e-4, 1e-2] {
+            let (x, y) = (g0.eval(t), g1.eval(a * t));
+            assert!((x - y).abs() <= 1e-12 * x, "t = {t}: {x} vs {y}");
+        }
+        assert_eq!(
+            m.time_shifted(1.0).unwrap().shear().terms(),
+            m.shear().terms()
+        );
+        assert!(m.time_shifted(0.0).is_err());
+        assert!(m.time_shifted(f64::NAN).is_err());
+    }
+}
