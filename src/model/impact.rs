@@ -361,6 +361,49 @@ pub struct Work {
     pub levels: u32,
 }
 
+/// The method that produced an [`Outcome`]: one of the solvers, or the Hertz closed form that
+/// answers an elastic impact whatever the solver. It prints as its name (`hertz`, `fast`,
+/// `reference`, `mdr`, `mdr-euler`), the text of the `solver` column and key.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Method {
+    /// The Hertz closed form (an elastic impact).
+    Hertz,
+    /// The reduced collocation solver.
+    Fast,
+    /// The Lee–Radok/Ting reference solver.
+    Reference,
+    /// MDR with the exponential scheme.
+    Mdr,
+    /// MDR with the paper's explicit Euler.
+    MdrEuler,
+}
+
+impl Method {
+    /// The printed name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Hertz => "hertz",
+            Method::Fast => "fast",
+            Method::Reference => "reference",
+            Method::Mdr => "mdr",
+            Method::MdrEuler => "mdr-euler",
+        }
+    }
+}
+
+impl std::fmt::Display for Method {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl PartialEq<&str> for Method {
+    fn eq(&self, other: &&str) -> bool {
+        self.name() == *other
+    }
+}
+
 /// What an impact produced. All quantities SI unless stated.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Outcome {
@@ -386,8 +429,8 @@ pub struct Outcome {
     pub history: Option<History>,
     /// Work counters.
     pub work: Work,
-    /// Name of the solver that produced it.
-    pub solver: &'static str,
+    /// The method that produced it (prints as the solver's name, or `hertz` for the closed form).
+    pub solver: Method,
     /// Why `auto` did not answer with its first choice: the refusal of `fast` when `reference`
     /// answered instead (`None` otherwise), as the typed error.
     pub fallback: Option<Box<Error>>,

@@ -159,7 +159,7 @@ mod ting;
 use std::sync::OnceLock;
 
 use crate::error::{Error, Result};
-use crate::model::impact::{History, Outcome, Work};
+use crate::model::impact::{History, Method, Outcome, Work};
 use crate::model::material::Prony;
 use crate::model::tolerances;
 use basis::*;
@@ -506,7 +506,7 @@ fn hertz(c_inf: f64, history: bool) -> Outcome {
             h
         }),
         work: Work::default(),
-        solver: SOLVER_NAME,
+        solver: Method::Fast,
         fallback: None,
     }
 }

@@ -22,7 +22,7 @@ pub mod indent;
 pub(crate) mod network;
 
 use crate::error::{Error, Result};
-use crate::model::impact::{History, Outcome, Work};
+use crate::model::impact::{History, Method, Outcome, Work};
 use crate::model::material::{ElementModel, ElementNetwork, GeneralNetwork, Prony, StackedNetwork};
 use crate::model::tolerances;
 use euler::EulerFoundation;
@@ -428,7 +428,7 @@ fn run_stepper<F: Stepper>(
     }
     let (max_elements, element_updates) = f.counters();
     Ok(finish(
-        "mdr",
+        Method::Mdr,
         v,
         t_end,
         &tr,
@@ -571,7 +571,7 @@ fn euler_loop<N: euler::Dashpots>(
         }
     }
     Ok(finish(
-        "mdr-euler",
+        Method::MdrEuler,
         v,
         t_end,
         &tr,
@@ -581,7 +581,7 @@ fn euler_loop<N: euler::Dashpots>(
 }
 
 fn finish(
-    solver: &'static str,
+    solver: Method,
     v_end: f64,
     t_end: f64,
     tr: &Tracker,

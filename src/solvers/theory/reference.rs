@@ -58,7 +58,7 @@ use super::{REF_EVENT_TOL, REF_LOCAL_FACTOR, REF_MAX_NEWTON, REF_MAX_STEPS, REF_
 use crate::error::{check, Error, Result};
 use crate::math::roots::newton_bracketed_with;
 use crate::math::special::exp_moments;
-use crate::model::impact::{History, Outcome, Work};
+use crate::model::impact::{History, Method, Outcome, Work};
 use crate::model::material::Prony;
 use nalgebra::{SMatrix, SVector};
 
@@ -1030,7 +1030,7 @@ fn solve(prony: &Prony, rtol: f64, sampling: Sampling, samples: usize) -> Result
                 cor_error_estimate: Some(est),
                 history: fine.history,
                 work,
-                solver: "reference",
+                solver: Method::Reference,
                 fallback: None,
             });
         }
