@@ -16,7 +16,7 @@
 use crate::error::{check, Error, Result};
 use crate::model::bodies::TwoBodies;
 pub use crate::model::material::Groups;
-use crate::model::material::{Material, Prony, StandardSolid};
+use crate::model::material::{poles, Material, Prony, StandardSolid};
 
 /// A rigid sphere: mass `m` (kg) and radius `R` (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -255,6 +255,32 @@ impl Impact {
         &self.equivalent
     }
 
+    /// `G_eq(t)` in SI (Pa, s) derived without `material::carson`, for the reference solver: the
+    /// closed form of docs/theory.md §2 for a material of the standard solid's shape
+    /// ([`Material::as_standard_solid`]), [`poles::equivalent_relaxation`] otherwise, and for two
+    /// bodies each body's by the same rule combined by [`poles::series`] (a rigid body drops
+    /// out). Two derivations of one function that verify each other.
+    pub fn independent_relaxation(&self) -> Result<Prony> {
+        let one = |m: &Material| -> Result<Prony> {
+            match m.as_standard_solid() {
+                Some(s) => Ok(s.equivalent_relaxation()),
+                None => poles::equivalent_relaxation(m),
+            }
+        };
+        match &self.target {
+            Target::HalfSpace(m) => one(m),
+            Target::TwoBodies(b) => {
+                match (b.a().material().material(), b.b().material().material()) {
+                    (Some(a), Some(b)) => poles::series(&one(a)?, &one(b)?),
+                    (Some(m), None) | (None, Some(m)) => one(m),
+                    (None, None) => Err(Error::Internal(
+                        "two rigid bodies have no relaxation function",
+                    )),
+                }
+            }
+        }
+    }
+
     /// True when `G_eq(t)` is constant for `t > 0` (no decaying term): the Hertz closed form
     /// with the relaxed modulus is exact.
     pub fn is_elastic(&self) -> bool {
@@ -337,7 +363,7 @@ impl History {
     pub fn is_empty(&self) -> bool {
         self.t.is_empty()
     }
-    fn scale(&mut self, s: &Scales) {
+    pub(crate) fn scale(&mut self, s: &Scales) {
         self.t.iter_mut().for_each(|x| *x *= s.time);
         self.d.iter_mut().for_each(|x| *x *= s.length);
         self.v.iter_mut().for_each(|x| *x *= s.velocity);
@@ -456,22 +482,5 @@ impl Outcome {
         } else {
             format!("fast: {e}")
         })
-    }
-
-    /// Map a canonical outcome (`m = R = v0 = G_inf = 1`) to SI with the impact's scales.
-    pub fn to_si(mut self, impact: &Impact) -> Outcome {
-        let s = impact.scales();
-        self.rebound_velocity *= s.velocity;
-        self.contact_time *= s.time;
-        self.max_indentation *= s.length;
-        self.time_of_max_indentation *= s.time;
-        self.max_force *= s.force;
-        self.max_contact_radius *= s.radius;
-        // canonical energy is in units of m v0^2
-        self.dissipated_energy *= s.energy;
-        if let Some(h) = self.history.as_mut() {
-            h.scale(&s);
-        }
-        self
     }
 }

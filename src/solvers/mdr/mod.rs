@@ -22,9 +22,13 @@ pub mod indent;
 pub(crate) mod network;
 
 use crate::error::{Error, Result};
+pub use crate::model::contact::Network;
+use crate::model::contact::{CanonicalOutcome, Contact, Geometry};
+use crate::model::impact::Impact;
 use crate::model::impact::{History, Method, Outcome, Work};
-use crate::model::material::{ElementModel, ElementNetwork, GeneralNetwork, Prony, StackedNetwork};
+use crate::model::material::{ElementModel, Prony};
 use crate::model::tolerances;
+use crate::solvers::api::{ImpactSolver, SolveOptions, SolverKind};
 use euler::EulerFoundation;
 use exponential::ExpFoundation;
 use network::NetFoundation;
@@ -38,16 +42,17 @@ pub struct Foundation {
 }
 
 impl Foundation {
-    /// Foundation with spacing `dx` (m) for a sphere of radius `radius` (m), with at most
-    /// `capacity` elements.
-    pub fn new(dx: f64, radius: f64, capacity: usize) -> Self {
+    /// Foundation with spacing `dx` for the indenter `geometry` (a paraboloid: its `1 / R` is
+    /// kept, so that `g` costs two products), with at most `capacity` elements.
+    pub fn new(dx: f64, geometry: &Geometry, capacity: usize) -> Self {
         Self {
             dx,
-            inv_radius: 1.0 / radius,
+            inv_radius: geometry.inverse_radius(),
             capacity,
         }
     }
-    /// Equivalent profile at element `i`: `g(x_i) = x_i^2 / R`, `x_i = (i + 1/2) dx`.
+    /// Equivalent profile at element `i`: `g(x_i) = x_i^2 / R` ([`Geometry::profile`]),
+    /// `x_i = (i + 1/2) dx`.
     #[inline]
     pub fn g(&self, i: usize) -> f64 {
         let x = (i as f64 + 0.5) * self.dx;
@@ -98,33 +103,92 @@ impl Scheme {
     }
 }
 
-/// The material of a canonical problem in the two forms the schemes need.
+/// The material of a canonical problem in the forms the schemes need, with the geometry.
 #[derive(Debug, Clone)]
 pub struct CanonicalMaterial {
     /// Equivalent relaxation function (moduli / `G_inf`, times / time scale).
     pub prony: Prony,
     /// The element network in the same units.
     pub network: Network,
+    /// The indenter's shape (the canonical paraboloid today).
+    pub geometry: Geometry,
 }
 
-/// The element network of a canonical material.
-#[derive(Debug, Clone)]
-pub enum Network {
-    /// The standard solid's network of Eq. (8). [`Scheme::Exponential`] integrates the
-    /// standard solid through its closed-form `G_eq` ([`CanonicalMaterial::prony`]) and
-    /// [`Scheme::Euler`] through this network.
-    StandardSolid(ElementNetwork),
-    /// A general material's network built from `G` and `K` ([`GeneralNetwork`]), which both
-    /// schemes integrate ([`Scheme::Euler`] on its dashpot positions).
-    General(GeneralNetwork),
-    /// Two colliding bodies' networks in series ([`StackedNetwork`], docs/theory.md §8), never
-    /// combined into `G_tot`; [`Scheme::Exponential`] integrates it, [`Scheme::Euler`] refuses it.
-    Stacked(StackedNetwork),
+impl CanonicalMaterial {
+    /// The MDR's view of a contact: its `G_eq`, network and geometry.
+    pub fn of(contact: &Contact) -> Self {
+        Self {
+            prony: (*contact.g_eq).clone(),
+            network: contact.network.clone(),
+            geometry: contact.geometry,
+        }
+    }
 }
 
-/// The one-line refusal of [`Scheme::Euler`] for two viscoelastic bodies.
+/// The impact's material in canonical units, in the forms the MDR schemes need (the network is
+/// chosen by shape in [`Impact::contact`]).
+pub fn canonical_material(impact: &Impact) -> Result<CanonicalMaterial> {
+    Ok(CanonicalMaterial::of(&impact.contact()?))
+}
+
+/// An MDR scheme behind the solver interface: `mdr` ([`Scheme::Exponential`]) or `mdr-euler`
+/// ([`Scheme::Euler`]), to `rtol` ([`solve_rtol`]) or on an explicit resolution
+/// ([`run_resolution`], within the work limit).
+#[derive(Debug, Clone, Copy)]
+pub struct Mdr(pub Scheme);
+
+impl ImpactSolver for Mdr {
+    fn kind(&self) -> SolverKind {
+        match self.0 {
+            Scheme::Euler => SolverKind::MdrEuler,
+            Scheme::Exponential => SolverKind::Mdr,
+        }
+    }
+    fn solve(&self, contact: &Contact, opts: &SolveOptions) -> Result<CanonicalOutcome> {
+        let scheme = self.0;
+        let material = CanonicalMaterial::of(contact);
+        let o = match opts.resolution {
+            Some(r) => {
+                let needed = (r.elements as u64).saturating_mul(r.steps as u64);
+                if needed > opts.work_limit {
+                    return Err(Error::WorkLimit {
+                        solver: scheme.name(),
+                        what: "elements x steps",
+                        needed,
+                        limit: opts.work_limit,
+                    });
+                }
+                let layout = pilot_material(&material)?;
+                run_resolution(
+                    scheme,
+                    &material,
+                    &layout,
+                    r.elements,
+                    r.steps,
+                    opts.history,
+                )?
+            }
+            None => solve_rtol(scheme, &material, opts.rtol, opts.history, opts.work_limit)?,
+        };
+        Ok(CanonicalOutcome::new(o))
+    }
+}
+
+/// The one-line refusal of [`Scheme::Euler`] for two viscoelastic bodies (the text of its
+/// [`Error::NotSupported`], [`euler_refusal`]).
 pub const EULER_GENERAL_UNSUPPORTED: &str = "mdr-euler: the paper's explicit Euler runs on one \
      body's element network; use mdr, fast or reference for two viscoelastic bodies";
+
+/// The refusal of [`Scheme::Euler`] for two viscoelastic bodies; prints
+/// [`EULER_GENERAL_UNSUPPORTED`].
+pub fn euler_refusal() -> Error {
+    Error::NotSupported {
+        solver: "mdr-euler",
+        what: "the paper's explicit Euler runs on one body's element network; use mdr, fast or \
+               reference for two viscoelastic bodies"
+            .into(),
+    }
+}
 
 /// The step interface of the exponential scheme's foundations: the standard solid's through
 /// `G_eq` ([`ExpFoundation`]) and the general network ([`NetFoundation`]).
@@ -324,7 +388,17 @@ pub fn run_exponential(
     capacity: usize,
     history: bool,
 ) -> Result<Outcome> {
-    let geom = Foundation::new(grid.dx, 1.0, capacity);
+    run_exponential_on(&Geometry::UNIT_SPHERE, prony, grid, capacity, history)
+}
+
+fn run_exponential_on(
+    geometry: &Geometry,
+    prony: &Prony,
+    grid: &Grid,
+    capacity: usize,
+    history: bool,
+) -> Result<Outcome> {
+    let geom = Foundation::new(grid.dx, geometry, capacity);
     run_stepper(ExpFoundation::new(geom, prony), grid, capacity, history)
 }
 
@@ -336,7 +410,17 @@ pub fn run_network<N: ElementModel>(
     capacity: usize,
     history: bool,
 ) -> Result<Outcome> {
-    let geom = Foundation::new(grid.dx, 1.0, capacity);
+    run_network_on(&Geometry::UNIT_SPHERE, network, grid, capacity, history)
+}
+
+fn run_network_on<N: ElementModel>(
+    geometry: &Geometry,
+    network: &N,
+    grid: &Grid,
+    capacity: usize,
+    history: bool,
+) -> Result<Outcome> {
+    let geom = Foundation::new(grid.dx, geometry, capacity);
     run_stepper(
         NetFoundation::new(geom, network.clone()),
         grid,
@@ -492,7 +576,7 @@ pub fn run_euler(
     capacity: usize,
     history: bool,
 ) -> Result<Outcome> {
-    let geom = Foundation::new(grid.dx, 1.0, capacity);
+    let geom = Foundation::new(grid.dx, &material.geometry, capacity);
     match &material.network {
         Network::StandardSolid(n) => {
             euler_loop(EulerFoundation::new(geom, *n), grid, capacity, history)
@@ -503,7 +587,7 @@ pub fn run_euler(
             capacity,
             history,
         ),
-        Network::Stacked(_) => Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string())),
+        Network::Stacked(_) => Err(euler_refusal()),
     }
 }
 
@@ -631,14 +715,17 @@ pub fn pilot(prony: &Prony) -> Result<Layout> {
 /// its own network (glassy modulus from the network's instantaneous stiffness), the standard
 /// solid's from [`pilot`] on its `G_eq`.
 pub fn pilot_material(material: &CanonicalMaterial) -> Result<Layout> {
+    let g = &material.geometry;
     match &material.network {
         Network::General(net) => pilot_with(net.entry_stiffness(0.0).0, |grid, capacity| {
-            run_network(net, grid, capacity, false)
+            run_network_on(g, net, grid, capacity, false)
         }),
         Network::Stacked(net) => pilot_with(net.entry_stiffness(0.0).0, |grid, capacity| {
-            run_network(net, grid, capacity, false)
+            run_network_on(g, net, grid, capacity, false)
         }),
-        Network::StandardSolid(_) => pilot(&material.prony),
+        Network::StandardSolid(_) => pilot_with(material.prony.glassy(), |grid, capacity| {
+            run_exponential_on(g, &material.prony, grid, capacity, false)
+        }),
     }
 }
 
@@ -706,15 +793,18 @@ pub fn run_resolution(
 ) -> Result<Outcome> {
     let grid = Grid::from_layout(layout, elements, steps);
     let capacity = capacity_for(grid.dx, layout.contact_radius);
+    let g = &material.geometry;
     match (scheme, &material.network) {
-        (Scheme::Exponential, Network::General(net)) => run_network(net, &grid, capacity, history),
-        (Scheme::Exponential, Network::Stacked(net)) => run_network(net, &grid, capacity, history),
+        (Scheme::Exponential, Network::General(net)) => {
+            run_network_on(g, net, &grid, capacity, history)
+        }
+        (Scheme::Exponential, Network::Stacked(net)) => {
+            run_network_on(g, net, &grid, capacity, history)
+        }
         (Scheme::Exponential, Network::StandardSolid(_)) => {
-            run_exponential(&material.prony, &grid, capacity, history)
+            run_exponential_on(g, &material.prony, &grid, capacity, history)
         }
-        (Scheme::Euler, Network::Stacked(_)) => {
-            Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string()))
-        }
+        (Scheme::Euler, Network::Stacked(_)) => Err(euler_refusal()),
         (Scheme::Euler, Network::StandardSolid(_) | Network::General(_)) => {
             let bound = euler_step_bound(&material.prony, layout.contact_radius);
             let dt = grid.dt_compression.max(grid.dt_restitution);
@@ -778,7 +868,7 @@ pub fn solve_rtol(
     work_limit: u64,
 ) -> Result<Outcome> {
     if let (Scheme::Euler, Network::Stacked(_)) = (scheme, &material.network) {
-        return Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string()));
+        return Err(euler_refusal());
     }
     let layout = pilot_material(material)?;
     let (mut n, mut m) = match scheme {
