@@ -78,6 +78,7 @@ pub mod solvers;
 
 pub use error::{Error, Result};
 pub use model::bodies::{Body, BodyMaterial, Side, TwoBodies};
-pub use model::impact::{Groups, History, Impact, Outcome, Sphere, Target, Work};
+pub use model::contact::{CanonicalOutcome, CanonicalProny, Contact, Geometry};
+pub use model::impact::{Groups, History, Impact, Method, Outcome, Scales, Sphere, Target, Work};
 pub use model::material::{Bulk, BulkInput, Material, Prony, PronyTerm, StandardSolid};
-pub use solvers::{solve, Resolution, SolveOptions, SolverKind};
+pub use solvers::{solve, ImpactSolver, Resolution, SolveOptions, SolverKind};

@@ -285,7 +285,10 @@ fn error_variants() {
         }) => {}
         other => panic!("unexpected {other:?}"),
     }
-    assert!(matches!("euler".parse::<SolverKind>(), Err(Unsupported(_))));
+    assert!(matches!(
+        "euler".parse::<SolverKind>(),
+        Err(Error::Parse { what: "solver", .. })
+    ));
     // a time loop that is not allowed enough steps to finish the contact
     let mat = solvers::canonical_material(&imp).unwrap();
     let layout = mdr::pilot(&mat.prony).unwrap();

@@ -70,8 +70,9 @@ fn resolution_ranges_and_solvers() {
     }
     for kind in [SolverKind::Fast, SolverKind::Reference] {
         match with_resolution(kind, 100, 1000).validate() {
-            Err(Error::Unsupported(m)) => {
-                assert!(m.contains(&format!("not '{}'", kind.name())), "{m}")
+            Err(Error::NotSupported { solver, what }) => {
+                assert_eq!(solver, kind.name());
+                assert!(what.contains("elements/steps"), "{what}")
             }
             other => panic!("{kind}: {other:?}"),
         }
@@ -112,7 +113,10 @@ fn scene_resolution_refused_as_written() {
         let text = scene_with("elements = 200\nsteps = 2000", "")
             .replace("name = \"auto\"", &format!("name = \"{name}\""));
         let e = scene_error(&text).to_string();
-        assert!(e.contains(&format!("not '{name}'")), "{e}");
+        assert!(
+            e.contains(&format!("{name}: [solver] elements/steps")),
+            "{e}"
+        );
     }
     for name in ["auto", "mdr", "mdr-euler"] {
         let text = scene_with("elements = 200\nsteps = 2000", "")

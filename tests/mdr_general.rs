@@ -187,7 +187,13 @@ fn mdr_euler_takes_general_material() {
         .impact()
         .unwrap();
     let e = solve(&two, &opts(SolverKind::MdrEuler, 1e-3)).unwrap_err();
-    assert!(matches!(e, Error::Unsupported(_)));
+    assert!(matches!(
+        e,
+        Error::NotSupported {
+            solver: "mdr-euler",
+            ..
+        }
+    ));
     assert_eq!(
         e.to_string(),
         mdr_impact::solvers::MDR_EULER_GENERAL_UNSUPPORTED

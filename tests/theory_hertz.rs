@@ -98,7 +98,7 @@ fn prescribed_variant() {
 }
 
 /// SI Hertz outcome of a dimensional impact equals the canonical one mapped with the impact's
-/// scales (`Outcome::to_si`), to 1e-12: the closed forms respect the scaling of Eq. (11).
+/// scales (`CanonicalOutcome::to_si`), to 1e-12: the closed forms respect the scaling of Eq. (11).
 #[test]
 fn si_outcome_matches_canonical_scaled() {
     use mdr_impact::model::hertz::hertz_outcome;
@@ -108,11 +108,13 @@ fn si_outcome_matches_canonical_scaled() {
     let si = hertz_outcome(&imp, None).unwrap();
     let m = m.as_standard_solid().unwrap();
     let e_star = m.effective_modulus(m.g_inf()) / m.g_inf();
-    let can = HertzImpact::canonical(e_star)
-        .unwrap()
-        .outcome(None)
-        .unwrap()
-        .to_si(&imp);
+    let can = mdr_impact::model::contact::CanonicalOutcome::new(
+        HertzImpact::canonical(e_star)
+            .unwrap()
+            .outcome(None)
+            .unwrap(),
+    )
+    .to_si(&imp.scales());
     for (a, b) in [
         (si.contact_time, can.contact_time),
         (si.max_indentation, can.max_indentation),

@@ -931,7 +931,7 @@ impl ImpactResult {
             max_contact_radius: o.max_contact_radius,
             dissipated_energy: o.dissipated_energy,
             estimated_rel_error: o.cor_error_estimate,
-            solver: o.solver,
+            solver: o.solver.name(),
             fallback: o.fallback.map(|e| e.to_string()),
             work: o.work,
             histories: o.history,

@@ -88,7 +88,7 @@ def test_array_bad_input_names_index():
 def test_bad_options_and_types_raise():
     with pytest.raises(mi.Error, match=r"^rtol = 1e0 is out of range: allowed 1e-12 <= rtol"):
         mi.cor(0.3, 1.0, 1.0, rtol=1.0)
-    with pytest.raises(mi.Error, match="unknown solver 'foo': expected one of auto"):
+    with pytest.raises(mi.Error, match="solver: cannot read 'foo': expected one of auto"):
         mi.cor(0.3, 1.0, 1.0, solver="foo")
     with pytest.raises(mi.Error, match="^nu: not a real number"):
         mi.cor("abc", 1.0, 1.0)

@@ -262,7 +262,7 @@ fn value(o: &Outcome) -> serde_json::Value {
         "max_force": o.max_force,
         "max_contact_radius": o.max_contact_radius,
         "dissipated_energy": o.dissipated_energy,
-        "solver": o.solver,
+        "solver": o.solver.name(),
         "estimated_rel_error": o.cor_error_estimate,
         "fallback": o.fallback.as_ref().map(|e| e.to_string()),
         "work": {

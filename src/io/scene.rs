@@ -453,52 +453,24 @@ impl Table {
             Table::Bulk => "k_inf",
         }
     }
-    /// The full name of `field` of this table for error messages (`&'static str`, as
-    /// [`Error`] keeps it).
-    fn field(self, field: &str) -> &'static str {
-        match (self, field) {
-            (Table::Shear, "g_inf") => "[material.shear] g_inf",
-            (Table::Shear, "instantaneous") => "[material.shear] instantaneous",
-            (Table::Shear, "ratios") => "[material.shear] ratios",
-            (Table::Shear, "ratios.g_i") => "[material.shear] ratios: g_i",
-            (Table::Shear, "ratios.tau_i") => "[material.shear] ratios: tau_i",
-            (Table::Shear, "tau_i") => "[material.shear] terms: tau_i",
-            (Table::Shear, _) => "[material.shear] terms: g_i",
-            (Table::Bulk, "k_inf") => "[material.bulk] k_inf",
-            (Table::Bulk, "k_0") => "[material.bulk] k_0",
-            (Table::Bulk, "nu") => "[material.bulk] poisson",
-            (Table::Bulk, "instantaneous") => "[material.bulk] instantaneous",
-            (Table::Bulk, "ratios") => "[material.bulk] ratios",
-            (Table::Bulk, "ratios.g_i") => "[material.bulk] ratios: k_j",
-            (Table::Bulk, "ratios.tau_i") => "[material.bulk] ratios: theta_j",
-            (Table::Bulk, "theta_j") => "[material.bulk] terms: theta_j",
-            (Table::Bulk, _) => "[material.bulk] terms: k_j",
+    /// `e` with the table it came from as its place ([`Error::In`]): an error about the terms
+    /// of a series is placed in the table's `section` (`terms` or `ratios`), anything else in
+    /// the table itself.
+    fn place(self, section: &str, e: Error) -> Error {
+        let (modulus, time) = self.term_fields();
+        match e {
+            Error::PronyTerm { .. } => e.at(format!("{} {section}", self.name())),
+            Error::OutOfRange { field, .. } if field == modulus || field == time => {
+                e.at(format!("{} {section}", self.name()))
+            }
+            e => e.at(self.name()),
         }
     }
-    /// `e` with its field renamed to the scene key it came from.
-    fn rename(self, e: Error) -> Error {
-        match e {
-            Error::OutOfRange {
-                field,
-                value,
-                allowed,
-            } => Error::OutOfRange {
-                field: self.field(field),
-                value,
-                allowed,
-            },
-            Error::PronyTerm {
-                field,
-                index,
-                value,
-                allowed,
-            } => Error::PronyTerm {
-                field: self.field(field),
-                index,
-                value,
-                allowed,
-            },
-            other => other,
+    /// The names of a term's modulus and time in this table (`g_i`, `tau_i` or `k_j`, `theta_j`).
+    fn term_fields(self) -> (&'static str, &'static str) {
+        match self {
+            Table::Shear => ("g_i", "tau_i"),
+            Table::Bulk => ("k_j", "theta_j"),
         }
     }
 }
@@ -538,39 +510,49 @@ fn series_of(table: Table, k: &SeriesKeys<'_>, base: &Path) -> Result<(f64, Vec<
             )));
         };
         let g0 = crate::error::check(
-            table.field("instantaneous"),
+            "instantaneous",
             g0,
             g0 > 0.0,
             "0 < instantaneous < inf (Pa)",
-        )?;
+        )
+        .map_err(|e| table.place("ratios", e))?;
         let pairs = pairs_of(t, "ratios", ratios)?;
         let mut sum = 0.0;
         for (index, &(g, tau)) in pairs.iter().enumerate() {
             if !(g.is_finite() && (0.0..1.0).contains(&g)) {
-                return Err(Error::PronyTerm {
-                    field: table.field("ratios.g_i"),
-                    index,
-                    value: g,
-                    allowed: "0 <= ratio < 1",
-                });
+                return Err(table.place(
+                    "ratios",
+                    Error::PronyTerm {
+                        field: table.term_fields().0,
+                        index,
+                        value: g,
+                        allowed: "0 <= ratio < 1",
+                    },
+                ));
             }
             if !(tau.is_finite() && tau > 0.0) {
-                return Err(Error::PronyTerm {
-                    field: table.field("ratios.tau_i"),
-                    index,
-                    value: tau,
-                    allowed: "0 < time < inf (s)",
-                });
+                return Err(table.place(
+                    "ratios",
+                    Error::PronyTerm {
+                        field: table.term_fields().1,
+                        index,
+                        value: tau,
+                        allowed: "0 < time < inf (s)",
+                    },
+                ));
             }
             sum += g;
         }
         if sum >= 1.0 {
-            return Err(Error::OutOfRange {
-                field: table.field("ratios"),
-                value: sum,
-                allowed: "a sum of the ratios below 1 (relaxed modulus = instantaneous \
-                          (1 - sum) > 0)",
-            });
+            return Err(table.place(
+                "ratios",
+                Error::OutOfRange {
+                    field: "ratios",
+                    value: sum,
+                    allowed: "a sum of the ratios below 1 (relaxed modulus = instantaneous \
+                              (1 - sum) > 0)",
+                },
+            ));
         }
         let relaxed = g0 * (1.0 - sum);
         let moduli = pairs.iter().map(|&(g, tau)| (g * g0, tau)).collect();
@@ -634,7 +616,7 @@ fn general_material(shear: &RawShear, bulk: &RawBulk, base: &Path) -> Result<Mat
         },
         base,
     )?;
-    let shear = ShearProny::new(g_inf, &terms).map_err(|e| Table::Shear.rename(e))?;
+    let shear = ShearProny::new(g_inf, &terms).map_err(|e| Table::Shear.place("terms", e))?;
     let series_given = bulk.k_inf.is_some()
         || bulk.terms.is_some()
         || bulk.file.is_some()
@@ -676,6 +658,9 @@ fn general_material(shear: &RawShear, bulk: &RawBulk, base: &Path) -> Result<Mat
     } else if let Some(k) = bulk.k_0 {
         BulkInput::Elastic(k)
     } else if let Some(nu) = bulk.poisson {
+        // the key is `poisson`: check it under its name before the material checks `nu`
+        let nu = crate::error::check("poisson", nu, nu > -1.0 && nu <= 0.5, "-1 < poisson <= 0.5")
+            .map_err(|e| Table::Bulk.place("", e))?;
         BulkInput::Poisson(nu)
     } else {
         let (k_inf, terms) = series_of(
@@ -689,7 +674,7 @@ fn general_material(shear: &RawShear, bulk: &RawBulk, base: &Path) -> Result<Mat
             },
             base,
         )?;
-        BulkInput::Prony(BulkProny::new(k_inf, &terms).map_err(|e| Table::Bulk.rename(e))?)
+        BulkInput::Prony(BulkProny::new(k_inf, &terms).map_err(|e| Table::Bulk.place("terms", e))?)
     };
-    Material::general(shear, rheology).map_err(|e| Table::Bulk.rename(e))
+    Material::general(shear, rheology).map_err(|e| Table::Bulk.place("terms", e))
 }

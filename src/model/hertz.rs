@@ -23,7 +23,7 @@
 use crate::error::{check, Result};
 use crate::math::roots::newton_bracketed;
 use crate::math::special::hyp2f1_series;
-use crate::model::impact::{History, Impact, Outcome, Work};
+use crate::model::impact::{History, Impact, Method, Outcome, Work};
 
 /// `I = int_0^1 (1 - x^(5/2))^(-1/2) dx = (2/5) B(2/5, 1/2)`: Hertz contact time is
 /// `2 I d_max / v0` (docs/theory.md §6). Value from mpmath at 30 digits.
@@ -204,7 +204,7 @@ impl HertzImpact {
             cor_error_estimate: Some(0.0),
             history: hist,
             work: Work::default(),
-            solver: "hertz",
+            solver: Method::Hertz,
             fallback: None,
         })
     }

@@ -16,7 +16,7 @@
 use crate::error::{check, Error, Result};
 use crate::model::bodies::TwoBodies;
 pub use crate::model::material::Groups;
-use crate::model::material::{Material, Prony, StandardSolid};
+use crate::model::material::{poles, Material, Prony, StandardSolid};
 
 /// A rigid sphere: mass `m` (kg) and radius `R` (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -255,6 +255,32 @@ impl Impact {
         &self.equivalent
     }
 
+    /// `G_eq(t)` in SI (Pa, s) derived without `material::carson`, for the reference solver: the
+    /// closed form of docs/theory.md §2 for a material of the standard solid's shape
+    /// ([`Material::as_standard_solid`]), [`poles::equivalent_relaxation`] otherwise, and for two
+    /// bodies each body's by the same rule combined by [`poles::series`] (a rigid body drops
+    /// out). Two derivations of one function that verify each other.
+    pub fn independent_relaxation(&self) -> Result<Prony> {
+        let one = |m: &Material| -> Result<Prony> {
+            match m.as_standard_solid() {
+                Some(s) => Ok(s.equivalent_relaxation()),
+                None => poles::equivalent_relaxation(m),
+            }
+        };
+        match &self.target {
+            Target::HalfSpace(m) => one(m),
+            Target::TwoBodies(b) => {
+                match (b.a().material().material(), b.b().material().material()) {
+                    (Some(a), Some(b)) => poles::series(&one(a)?, &one(b)?),
+                    (Some(m), None) | (None, Some(m)) => one(m),
+                    (None, None) => Err(Error::Internal(
+                        "two rigid bodies have no relaxation function",
+                    )),
+                }
+            }
+        }
+    }
+
     /// True when `G_eq(t)` is constant for `t > 0` (no decaying term): the Hertz closed form
     /// with the relaxed modulus is exact.
     pub fn is_elastic(&self) -> bool {
@@ -337,7 +363,7 @@ impl History {
     pub fn is_empty(&self) -> bool {
         self.t.is_empty()
     }
-    fn scale(&mut self, s: &Scales) {
+    pub(crate) fn scale(&mut self, s: &Scales) {
         self.t.iter_mut().for_each(|x| *x *= s.time);
         self.d.iter_mut().for_each(|x| *x *= s.length);
         self.v.iter_mut().for_each(|x| *x *= s.velocity);
@@ -359,6 +385,49 @@ pub struct Work {
     pub evaluations: u64,
     /// Refinement levels of the adaptive driver.
     pub levels: u32,
+}
+
+/// The method that produced an [`Outcome`]: one of the solvers, or the Hertz closed form that
+/// answers an elastic impact whatever the solver. It prints as its name (`hertz`, `fast`,
+/// `reference`, `mdr`, `mdr-euler`), the text of the `solver` column and key.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Method {
+    /// The Hertz closed form (an elastic impact).
+    Hertz,
+    /// The reduced collocation solver.
+    Fast,
+    /// The Lee–Radok/Ting reference solver.
+    Reference,
+    /// MDR with the exponential scheme.
+    Mdr,
+    /// MDR with the paper's explicit Euler.
+    MdrEuler,
+}
+
+impl Method {
+    /// The printed name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Hertz => "hertz",
+            Method::Fast => "fast",
+            Method::Reference => "reference",
+            Method::Mdr => "mdr",
+            Method::MdrEuler => "mdr-euler",
+        }
+    }
+}
+
+impl std::fmt::Display for Method {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl PartialEq<&str> for Method {
+    fn eq(&self, other: &&str) -> bool {
+        self.name() == *other
+    }
 }
 
 /// What an impact produced. All quantities SI unless stated.
@@ -386,8 +455,8 @@ pub struct Outcome {
     pub history: Option<History>,
     /// Work counters.
     pub work: Work,
-    /// Name of the solver that produced it.
-    pub solver: &'static str,
+    /// The method that produced it (prints as the solver's name, or `hertz` for the closed form).
+    pub solver: Method,
     /// Why `auto` did not answer with its first choice: the refusal of `fast` when `reference`
     /// answered instead (`None` otherwise), as the typed error.
     pub fallback: Option<Box<Error>>,
@@ -413,22 +482,5 @@ impl Outcome {
         } else {
             format!("fast: {e}")
         })
-    }
-
-    /// Map a canonical outcome (`m = R = v0 = G_inf = 1`) to SI with the impact's scales.
-    pub fn to_si(mut self, impact: &Impact) -> Outcome {
-        let s = impact.scales();
-        self.rebound_velocity *= s.velocity;
-        self.contact_time *= s.time;
-        self.max_indentation *= s.length;
-        self.time_of_max_indentation *= s.time;
-        self.max_force *= s.force;
-        self.max_contact_radius *= s.radius;
-        // canonical energy is in units of m v0^2
-        self.dissipated_energy *= s.energy;
-        if let Some(h) = self.history.as_mut() {
-            h.scale(&s);
-        }
-        self
     }
 }

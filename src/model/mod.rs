@@ -4,6 +4,7 @@
 //! Nothing here knows a solver; the solvers consume what this layer builds.
 
 pub mod bodies;
+pub mod contact;
 pub mod hertz;
 pub mod impact;
 pub mod material;

@@ -80,7 +80,7 @@ pub fn rising_cor(data: &Data) -> Option<String> {
 /// When `nu` was fitted but the data do not determine it, every fitted modulus and viscosity
 /// holds only for the `nu` of the estimate: mark them not identifiable, conditional on it.
 pub fn condition_on_nu(r: &mut FitResult) {
-    let Some(inu) = r.model.index("nu") else {
+    let Some(inu) = r.model.slot(super::model::Parameter::Nu) else {
         return;
     };
     let nu = &r.parameters[inu];
@@ -121,7 +121,7 @@ pub fn apply(r: &mut FitResult) {
     if let Some(nu) = r.conditional_on_nu {
         r.verdict = format!(
             "{}; the moduli hold only for nu = {nu:.4}",
-            super::verdict(&r.parameters, &r.groups)
+            super::analysis::verdict(&r.parameters, &r.groups)
         );
     }
 }

@@ -154,10 +154,11 @@ impl Data {
 /// The sphere of a scene; two-body scenes are refused (`fit` identifies one half-space).
 pub fn scene_sphere(scene: &Scene, name: &str) -> Result<Sphere> {
     if scene.impact.bodies().is_some() {
-        return Err(Error::Unsupported(format!(
-            "{}: fit needs a one-sphere scene ([sphere]), not [[body]] tables",
-            escape_text(name)
-        )));
+        return Err(Error::NotSupported {
+            solver: "fit",
+            what: "it needs a one-sphere scene ([sphere]), not [[body]] tables".into(),
+        }
+        .at(escape_text(name)));
     }
     Ok(scene.impact.sphere())
 }

@@ -58,6 +58,7 @@
 //! [`FIT_PROFILE_STEP`]: crate::model::tolerances::FIT_PROFILE_STEP
 //! [`FIT_PROFILE_STEPS`]: crate::model::tolerances::FIT_PROFILE_STEPS
 
+mod analysis;
 pub mod checks;
 pub mod data;
 pub mod model;
@@ -77,8 +78,10 @@ use crate::model::tolerances::{
     FIT_SCOUT_PATIENCE, FIT_SCOUT_TOL, FIT_SCREEN_RTOL,
 };
 use crate::solvers::{solve, SolveOptions, SolverKind};
+use analysis::analyse;
+pub use analysis::{normal_quantile, t_quantile};
 pub use data::{Data, Observation, Setup};
-pub use model::{Model, ModelKind, ParamKind};
+pub use model::{prony_times, Model, ModelKind, ParamKind, Parameter};
 
 /// The modulus (Pa) at which `g_inf` is held when the data (CoR only) cannot determine it; any
 /// value gives the same CoRs, and it is never reported as an estimate.
@@ -96,11 +99,10 @@ pub struct Fix {
 impl std::str::FromStr for Fix {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self> {
-        let bad = || {
-            Error::Unsupported(format!(
-                "--fix '{}': expected name=value (SI), e.g. nu=0.45",
-                crate::error::escape_text(s)
-            ))
+        let bad = || Error::Parse {
+            what: "--fix",
+            input: crate::error::escape_text(s),
+            expected: "name=value (SI), e.g. nu=0.45".into(),
         };
         let (name, value) = s.split_once('=').ok_or_else(bad)?;
         let value: f64 = value.trim().parse().map_err(|_| bad())?;
@@ -121,20 +123,25 @@ pub fn setup_model(
     let model = Model::new(kind, k_0, taus)?;
     let mut fixed = vec![None; model.params.len()];
     for f in fixes.iter().filter(|f| f.name != "k_0") {
-        let i = model.index(&f.name).ok_or_else(|| {
-            Error::Unsupported(format!(
-                "--fix {}: unknown parameter{}; expected one of {}",
-                crate::error::escape_text(&f.name),
+        let i = model.index(&f.name).ok_or_else(|| Error::Parse {
+            what: "--fix",
+            input: crate::error::escape_text(&f.name),
+            expected: format!(
+                "a parameter of the model{}: one of {}",
                 if f.name == "nu" {
-                    " (k_0 is fixed)"
+                    " (not nu: k_0 is fixed)"
                 } else {
                     ""
                 },
                 model.names()
-            ))
+            ),
         })?;
         if fixed[i].is_some() {
-            return Err(Error::Unsupported(format!("--fix {} given twice", f.name)));
+            return Err(Error::Parse {
+                what: "--fix",
+                input: crate::error::escape_text(&f.name),
+                expected: "each parameter fixed once (it is given twice)".into(),
+            });
         }
         fixed[i] = Some(model.check_value(i, f.value)?);
     }
@@ -385,10 +392,9 @@ impl<'a> Ctx<'a> {
             report.termination,
             TerminationReason::NoResiduals | TerminationReason::WrongDimensions(_)
         ) {
-            return Err(Error::Unsupported(format!(
-                "fit: Levenberg-Marquardt stopped: {:?}",
-                report.termination
-            )));
+            return Err(Error::Internal(
+                "fit: Levenberg-Marquardt stopped on wrong dimensions or no residuals",
+            ));
         }
         let s = ssr(&self.residuals(&values, FIT_RTOL)?);
         if !s.is_finite() {
@@ -573,44 +579,43 @@ fn candidates(model: &Model, data: &Data, fixed: &[Option<f64>], hold: bool) -> 
     let p2s = [1e-4, 1e-3, 1e-2, 3e-2, 1e-1, 3e-1, 1.0];
     let p3s = [0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 300.0];
     let nus = [-0.5, 0.0, 0.3, 0.45, 0.49];
-    let inu = model.index("nu");
     let mut out = Vec::new();
     for &g in &g_levels {
         for &p2 in &p2s {
             for &p3 in &p3s {
                 for &nu in &nus {
                     let mut v = vec![0.0; model.params.len()];
+                    let fixed_of = |p: Parameter| model.slot(p).and_then(|i| fixed[i]);
+                    let standard = model.kind == ModelKind::StandardSolid;
                     // g_inf from the fixed value, a fixed g_1 (p2), a fixed eta (p3), or the grid
-                    let g_inf = match (fixed[0], fixed.get(1).copied().flatten()) {
+                    let g_inf = match (fixed_of(Parameter::GInf), fixed_of(Parameter::G1)) {
                         (Some(g), _) => g,
-                        (None, Some(g1)) if model.kind == ModelKind::StandardSolid => p2 * g1,
-                        _ => match (model.kind.clone(), fixed.get(2).copied().flatten()) {
-                            (ModelKind::StandardSolid, Some(eta)) => {
+                        (None, Some(g1)) if standard => p2 * g1,
+                        _ => match fixed_of(Parameter::Eta) {
+                            Some(eta) if standard => {
                                 ((eta / p3).powi(5) * v_ref * r / (m * m)).cbrt()
                             }
                             _ => g,
                         },
                     };
-                    v[0] = g_inf;
+                    model.set(&mut v, Parameter::GInf, g_inf);
                     let eta = p3 * (m * m * g_inf.powi(3) / (v_ref * r)).powf(0.2);
                     match model.kind {
                         ModelKind::StandardSolid => {
-                            v[1] = g_inf / p2;
-                            v[2] = eta;
+                            model.set(&mut v, Parameter::G1, g_inf / p2);
+                            model.set(&mut v, Parameter::Eta, eta);
                         }
                         ModelKind::Prony { n } => {
                             // equal moduli summing to g_inf / p2 (the times are fixed: p3 unused)
                             if p3 != p3s[0] {
                                 continue;
                             }
-                            for i in 0..n {
-                                v[1 + i] = g_inf / p2 / n as f64;
+                            for i in 1..=n {
+                                model.set(&mut v, Parameter::Term(i), g_inf / p2 / n as f64);
                             }
                         }
                     }
-                    if let Some(i) = inu {
-                        v[i] = nu;
-                    }
+                    model.set(&mut v, Parameter::Nu, nu);
                     for (x, f) in v.iter_mut().zip(fixed) {
                         if let Some(f) = f {
                             *x = *f;
@@ -633,10 +638,11 @@ fn candidates(model: &Model, data: &Data, fixed: &[Option<f64>], hold: bool) -> 
 pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResult> {
     let np = model.params.len();
     if fixed.len() != np {
-        return Err(Error::Unsupported(format!(
-            "fit: {} fixed-value slots for {np} parameters",
-            fixed.len()
-        )));
+        return Err(Error::OutOfRange {
+            field: "fit: fixed-value slots",
+            value: fixed.len() as f64,
+            allowed: "one slot per parameter of the model",
+        });
     }
     data.validate()?;
     for (i, f) in fixed.iter().enumerate() {
@@ -657,7 +663,9 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
     let hold = model.kind == ModelKind::StandardSolid
         && model.k_0.is_none()
         && !data.has_contact_times()
-        && fixed[..3].iter().all(Option::is_none);
+        && [Parameter::GInf, Parameter::G1, Parameter::Eta]
+            .iter()
+            .all(|&p| model.slot(p).is_some_and(|i| fixed[i].is_none()));
     let moving: Vec<usize> = free
         .iter()
         .copied()
@@ -688,7 +696,7 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
     let mut starts_from: Vec<Vec<f64>> = Vec::new();
     // every minimum met on the way (with nu held or not): all may widen the intervals
     let mut probes: Vec<(f64, Vec<f64>)> = Vec::new();
-    match model.index("nu").filter(|i| moving.contains(i)) {
+    match model.slot(Parameter::Nu).filter(|i| moving.contains(i)) {
         Some(inu) => {
             let held: Vec<usize> = moving.iter().copied().filter(|&k| k != inu).collect();
             let mut levels: Vec<(f64, Vec<f64>)> = Vec::new();
@@ -759,15 +767,11 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
 
 /// `p2 = g_inf / (sum of the relaxing shear moduli)` of the parameter `values`.
 fn stiffness_ratio(model: &Model, values: &[f64]) -> f64 {
-    let g_inf = model.index("g_inf").map_or(f64::NAN, |i| values[i]);
-    let relaxing: f64 = model
-        .params
-        .iter()
-        .zip(values)
-        .filter(|(p, _)| p.name.starts_with("g_") && p.name != "g_inf")
-        .map(|(_, v)| v)
-        .sum();
-    g_inf / relaxing
+    let relaxing: f64 = match model.kind {
+        ModelKind::StandardSolid => model.get(values, Parameter::G1),
+        ModelKind::Prony { n } => (1..=n).map(|i| model.get(values, Parameter::Term(i))).sum(),
+    };
+    model.get(values, Parameter::GInf) / relaxing
 }
 
 /// The weighted sum of squared residuals of `data` for the parameter `values` (forward solves at
@@ -775,341 +779,6 @@ fn stiffness_ratio(model: &Model, values: &[f64]) -> f64 {
 pub fn misfit(model: &Model, data: &Data, values: &[f64]) -> Result<f64> {
     let ctx = Ctx::new(model, data, &[]);
     Ok(ssr(&ctx.residuals(values, FIT_RTOL)?))
-}
-
-/// Uncertainty and identifiability at the estimate (module docs).
-fn analyse(
-    ctx: &Ctx,
-    (best_ssr, values): (f64, Vec<f64>),
-    others: &[(f64, Vec<f64>)],
-    fixed: &[Option<f64>],
-    free: &[usize],
-    moving: &[usize],
-) -> Result<FitResult> {
-    let model = ctx.model;
-    let np = model.params.len();
-    let coords = ctx.coords(&values);
-    let residuals = ctx.residual_list(&values, FIT_RTOL)?;
-    let n = residuals.len();
-    let ss: f64 = residuals.iter().map(|r| r.weighted * r.weighted).sum();
-    let rms_residual = (ss / n as f64).sqrt();
-
-    // SVD of the weighted Jacobian over every free coordinate
-    let cols = if free.is_empty() {
-        Vec::new()
-    } else {
-        ctx.jacobian(&coords, free)?
-    };
-    let j = nalgebra::DMatrix::from_fn(n, free.len(), |i, k| cols[k][i]);
-    let (sv, v_t) = if free.is_empty() {
-        (Vec::new(), nalgebra::DMatrix::zeros(0, 0))
-    } else {
-        let svd = j.svd(false, true);
-        let v_t = svd.v_t.ok_or(Error::NonFinite {
-            what: "fit Jacobian SVD",
-            value: f64::NAN,
-        })?;
-        (svd.singular_values.iter().copied().collect::<Vec<_>>(), v_t)
-    };
-    for &s in &sv {
-        if !s.is_finite() {
-            return Err(Error::NonFinite {
-                what: "fit Jacobian singular value",
-                value: s,
-            });
-        }
-    }
-    let s_max = sv.iter().copied().fold(0.0, f64::max);
-    let in_range = |k: usize| sv[k] > FIT_NULL_RATIO * s_max && s_max > 0.0;
-    let rank = (0..sv.len()).filter(|&k| in_range(k)).count();
-    let dof = n.saturating_sub(rank);
-    let noise_scale = if ctx.data.noise_known() {
-        Some(1.0)
-    } else if dof > 0 {
-        Some((ss / dof as f64).sqrt())
-    } else {
-        None
-    };
-    let quantile = match noise_scale {
-        None => None,
-        Some(_) if ctx.data.noise_known() => Some(normal_quantile()),
-        Some(_) => Some(t_quantile(dof)),
-    };
-    // covariance on the identified subspace, in the full coordinate numbering
-    let covariance = noise_scale.map(|s| {
-        let mut c = vec![vec![0.0; np]; np];
-        for k in (0..sv.len()).filter(|&k| in_range(k)) {
-            for (a, &ia) in free.iter().enumerate() {
-                for (b, &ib) in free.iter().enumerate() {
-                    c[ia][ib] += s * s * v_t[(k, a)] * v_t[(k, b)] / (sv[k] * sv[k]);
-                }
-            }
-        }
-        c
-    });
-    // the null-space component of a direction a (full numbering) over the free coordinates:
-    // the norm of what is left after projecting it onto the identified right singular vectors,
-    // relative to its free part (independent of the basis the SVD picks for the null space, and
-    // right when the SVD has fewer rows than free coordinates: n < p leaves p - n null
-    // directions without a row of v_t)
-    let null_component = |a: &[f64]| -> f64 {
-        let norm2 = free.iter().map(|&i| a[i] * a[i]).sum::<f64>();
-        if norm2 == 0.0 {
-            return 0.0;
-        }
-        let in_span: f64 = (0..sv.len())
-            .filter(|&k| in_range(k))
-            .map(|k| {
-                let p = free
-                    .iter()
-                    .enumerate()
-                    .map(|(b, &ib)| v_t[(k, b)] * a[ib])
-                    .sum::<f64>();
-                p * p
-            })
-            .sum();
-        (1.0 - in_span / norm2).max(0.0).sqrt()
-    };
-    let estimate = |name: String,
-                    unit: &'static str,
-                    a: &[f64],
-                    coord: f64,
-                    back: &dyn Fn(f64) -> f64,
-                    is_fixed: bool|
-     -> Estimate {
-        let value = back(coord);
-        if is_fixed {
-            return Estimate {
-                name,
-                unit,
-                value: Some(value),
-                ci95: Some((value, value)),
-                se: Some(0.0),
-                identifiable: true,
-                fixed: true,
-                note: "fixed".into(),
-            };
-        }
-        if null_component(a) > FIT_NULL_COMPONENT {
-            return Estimate {
-                name,
-                unit,
-                value: None,
-                ci95: None,
-                se: None,
-                identifiable: false,
-                fixed: false,
-                note: "not determined by the data (a null direction of the Jacobian)".into(),
-            };
-        }
-        let (Some(c), Some(q)) = (&covariance, quantile) else {
-            return Estimate {
-                name,
-                unit,
-                value: Some(value),
-                ci95: None,
-                se: None,
-                identifiable: false,
-                fixed: false,
-                note: "no residual degrees of freedom to estimate the noise (give cor_sd)".into(),
-            };
-        };
-        let var: f64 = (0..np)
-            .map(|i| (0..np).map(|k| a[i] * c[i][k] * a[k]).sum::<f64>())
-            .sum();
-        let se = var.max(0.0).sqrt();
-        let half = q * se;
-        let lo = back(coord - half);
-        let hi = back(coord + half);
-        let wide = !(half <= FIT_MAX_HALF_WIDTH);
-        Estimate {
-            name,
-            unit,
-            value: Some(value),
-            ci95: Some((lo.min(hi), lo.max(hi))),
-            se: Some(se),
-            identifiable: !wide,
-            fixed: false,
-            note: if wide {
-                "poorly determined: the 95 % interval spans more than a factor 10 either way \
-                 (in the parameter's coordinate)"
-                    .into()
-            } else {
-                String::new()
-            },
-        }
-    };
-    let parameters: Vec<Estimate> = model
-        .params
-        .iter()
-        .enumerate()
-        .map(|(i, p)| {
-            let mut a = vec![0.0; np];
-            a[i] = 1.0;
-            estimate(
-                p.name.clone(),
-                p.unit,
-                &a,
-                coords[i],
-                &|c| p.kind.from_coord(c),
-                fixed[i].is_some(),
-            )
-        })
-        .collect();
-    let groups: Vec<Estimate> = model
-        .groups(&values)
-        .into_iter()
-        .map(|(name, value, mut grad)| {
-            // coordinates: the Poisson coordinate does not enter; fixed ones do not vary
-            for (g, f) in grad.iter_mut().zip(fixed) {
-                if f.is_some() {
-                    *g = 0.0;
-                }
-            }
-            let all_fixed = grad.iter().all(|g| *g == 0.0);
-            let unit = if name == "p2" { "1" } else { "Pa^(2/5) s" };
-            estimate(
-                name.to_string(),
-                unit,
-                &grad,
-                value.ln(),
-                &f64::exp,
-                all_fixed,
-            )
-        })
-        .collect();
-    let mut parameters = parameters;
-    let mut groups = groups;
-    if let (Some(s), Some(q)) = (noise_scale, quantile) {
-        let threshold = q * q * s * s;
-        // the profile likelihood where the Wald interval is too wide to trust
-        for &i in moving {
-            let e = &mut parameters[i];
-            if e.identifiable || e.value.is_none() || e.ci95.is_none() {
-                continue;
-            }
-            let kind = model.params[i].kind;
-            let (lo, hi) = ctx.profile(&coords, best_ssr, i, moving, threshold);
-            let back = |c: Option<f64>| c.map(|c| kind.from_coord(c));
-            match (back(lo), back(hi)) {
-                (Some(a), Some(b)) => {
-                    e.ci95 = Some((a.min(b), a.max(b)));
-                    e.identifiable = true;
-                    e.note = "profile-likelihood interval (the Wald interval was too wide)".into();
-                }
-                (a, b) => {
-                    e.ci95 = None;
-                    e.note = format!(
-                        "not determined: the profile likelihood stays within the 95 % threshold \
-                         {} (bounds found: {}, {})",
-                        "up to four decades (or the nu range) from the estimate",
-                        a.map_or("none".to_string(), |x| format!("{x:.4e}")),
-                        b.map_or("none".to_string(), |x| format!("{x:.4e}"))
-                    );
-                }
-            }
-        }
-        // another point met by the fit (a minimum of another start, or of a nu level with nu
-        // held) whose misfit is within the likelihood-ratio threshold: the profile of every
-        // parameter lies at or below it there, so every interval is widened to contain it (and
-        // judged again by its reach)
-        for (other_ssr, other) in others.iter().filter(|o| o.0 - best_ssr <= threshold) {
-            let note = format!(
-                "interval widened to another point within the 95 % threshold of the misfit (SSR \
-                 {other_ssr:.4e} against {best_ssr:.4e})"
-            );
-            let widen = |e: &mut Estimate, v: f64, to_coord: &dyn Fn(f64) -> f64| {
-                let (Some((lo, hi)), Some(x), false) = (e.ci95, e.value, e.fixed) else {
-                    return;
-                };
-                if lo <= v && v <= hi {
-                    return;
-                }
-                let (lo, hi) = (lo.min(v), hi.max(v));
-                e.ci95 = Some((lo, hi));
-                e.note.clone_from(&note);
-                let reach = (to_coord(lo) - to_coord(x))
-                    .abs()
-                    .max((to_coord(hi) - to_coord(x)).abs());
-                if !(reach <= FIT_MAX_HALF_WIDTH) {
-                    e.identifiable = false;
-                    e.note
-                        .push_str(", which spans more than a factor 10 either way");
-                }
-            };
-            for ((e, v), p) in parameters.iter_mut().zip(other).zip(&model.params) {
-                widen(e, *v, &|x| p.kind.to_coord(x));
-            }
-            for (e, g) in groups.iter_mut().zip(model.groups(other)) {
-                widen(e, g.1, &f64::ln);
-            }
-        }
-    }
-    let verdict = verdict(&parameters, &groups);
-    Ok(FitResult {
-        model: model.clone(),
-        data: ctx.data.clone(),
-        values,
-        fixed: fixed.to_vec(),
-        parameters,
-        groups,
-        residuals,
-        rms_residual,
-        dof,
-        noise_scale,
-        quantile,
-        singular_values: sv,
-        covariance,
-        solves: ctx.solves.get(),
-        verdict,
-        conditional_on_nu: None,
-        goodness: None,
-        warnings: Vec::new(),
-    })
-}
-
-/// One line: which parameters and groups the data determine.
-fn verdict(parameters: &[Estimate], groups: &[Estimate]) -> String {
-    let names = |list: &[&Estimate]| {
-        if list.is_empty() {
-            "none".to_string()
-        } else {
-            list.iter()
-                .map(|e| e.name.as_str())
-                .collect::<Vec<_>>()
-                .join(", ")
-        }
-    };
-    let det: Vec<&Estimate> = parameters
-        .iter()
-        .chain(groups)
-        .filter(|e| e.identifiable && !e.fixed)
-        .collect();
-    let not: Vec<&Estimate> = parameters
-        .iter()
-        .chain(groups)
-        .filter(|e| !e.identifiable)
-        .collect();
-    format!(
-        "determined by the data: {}; not determined: {}",
-        names(&det),
-        names(&not)
-    )
-}
-
-/// The 97.5 % quantile of the standard normal distribution.
-pub fn normal_quantile() -> f64 {
-    use statrs::distribution::{ContinuousCDF, Normal};
-    Normal::standard().inverse_cdf(0.975)
-}
-
-/// The 97.5 % quantile of Student's `t` with `dof >= 1` degrees of freedom.
-pub fn t_quantile(dof: usize) -> f64 {
-    use statrs::distribution::{ContinuousCDF, StudentsT};
-    match StudentsT::new(0.0, 1.0, dof.max(1) as f64) {
-        Ok(t) => t.inverse_cdf(0.975),
-        Err(_) => f64::NAN,
-    }
 }
 
 impl FitResult {
@@ -1195,60 +864,4 @@ pub struct Prediction {
     pub contact_time: f64,
     /// Standard deviations of CoR and contact time (s) from the parameter covariance.
     pub sd: Option<(f64, f64)>,
-}
-
-/// The fixed relaxation times of `prony:N` (s): `N` log-spaced times over `MIN:MAX` (`range`),
-/// or by default from the measured contact times (the shortest / 100 to the longest x 100; one
-/// time: their geometric mean). Without contact times `range` is required. Empty for the
-/// standard solid.
-pub fn prony_times(kind: &ModelKind, range: Option<&str>, data: &Data) -> Result<Vec<f64>> {
-    let ModelKind::Prony { n } = *kind else {
-        return match range {
-            Some(_) => Err(Error::Unsupported(
-                "--tau-range applies to --model prony:N only".into(),
-            )),
-            None => Ok(Vec::new()),
-        };
-    };
-    let (lo, hi) = match range {
-        Some(s) => {
-            let bad = || {
-                Error::Unsupported(format!(
-                    "--tau-range '{}': expected MIN:MAX (s) with 0 < MIN < MAX < inf",
-                    crate::error::escape_text(s)
-                ))
-            };
-            let (a, b) = s.split_once(':').ok_or_else(bad)?;
-            let a: f64 = a.trim().parse().map_err(|_| bad())?;
-            let b: f64 = b.trim().parse().map_err(|_| bad())?;
-            if !(a > 0.0 && a < b && b.is_finite()) {
-                return Err(bad());
-            }
-            (a, b)
-        }
-        None => {
-            let t: Vec<f64> = data
-                .observations
-                .iter()
-                .filter_map(|o| o.contact_time)
-                .collect();
-            if t.is_empty() {
-                return Err(Error::Unsupported(
-                    "--model prony:N without contact times needs --tau-range MIN:MAX (s)".into(),
-                ));
-            }
-            let a = t.iter().copied().fold(f64::INFINITY, f64::min) / 100.0;
-            let b = t.iter().copied().fold(0.0, f64::max) * 100.0;
-            (a, b)
-        }
-    };
-    Ok((0..n)
-        .map(|i| {
-            if n == 1 {
-                (lo * hi).sqrt()
-            } else {
-                (lo.ln() + (hi / lo).ln() * i as f64 / (n - 1) as f64).exp()
-            }
-        })
-        .collect())
 }

@@ -9,6 +9,8 @@ use crate::error::{Error, Result};
 use crate::model::impact::{Impact, Sphere};
 use crate::model::material::{BulkInput, Material, ShearProny};
 
+use super::data::Data;
+
 /// Largest number of Prony terms of `prony:N`.
 pub const MAX_PRONY_TERMS: usize = 12;
 
@@ -45,12 +47,10 @@ impl std::str::FromStr for ModelKind {
         if s == "standard-solid" {
             return Ok(ModelKind::StandardSolid);
         }
-        let bad = || {
-            Error::Unsupported(format!(
-                "--model '{}': expected standard-solid or prony:N with 1 <= N <= \
-                 {MAX_PRONY_TERMS}",
-                crate::error::escape_text(s)
-            ))
+        let bad = || Error::Parse {
+            what: "--model",
+            input: crate::error::escape_text(s),
+            expected: format!("standard-solid or prony:N with 1 <= N <= {MAX_PRONY_TERMS}"),
         };
         let n: usize = s
             .strip_prefix("prony:")
@@ -105,6 +105,36 @@ pub struct Param {
     pub unit: &'static str,
 }
 
+/// A parameter of a model, by name: the code reads values through [`Model::slot`] and
+/// [`Model::get`], never by position; the positions exist only in the value vector that the
+/// Levenberg–Marquardt solver moves.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Parameter {
+    /// The relaxed shear modulus `g_inf` (Pa), in every model.
+    GInf,
+    /// The standard solid's relaxing modulus `g_1` (Pa).
+    G1,
+    /// The standard solid's viscosity `eta` (Pa s).
+    Eta,
+    /// The modulus `g_i` (Pa) of the Prony term `i` (1-based).
+    Term(usize),
+    /// The static Poisson ratio `nu` (absent when `k_0` is fixed).
+    Nu,
+}
+
+impl Parameter {
+    /// The name (the `--fix` and JSON key).
+    pub fn name(self) -> String {
+        match self {
+            Parameter::GInf => "g_inf".into(),
+            Parameter::G1 => "g_1".into(),
+            Parameter::Eta => "eta".into(),
+            Parameter::Term(i) => format!("g_{i}"),
+            Parameter::Nu => "nu".into(),
+        }
+    }
+}
+
 /// A model with its parameters, fixed bulk and (for Prony) fixed relaxation times.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Model {
@@ -135,10 +165,11 @@ impl Model {
             }
             ModelKind::Prony { n } => {
                 if taus.len() != n {
-                    return Err(Error::Unsupported(format!(
-                        "prony:{n} needs {n} relaxation times, got {}",
-                        taus.len()
-                    )));
+                    return Err(Error::OutOfRange {
+                        field: "prony: relaxation times",
+                        value: taus.len() as f64,
+                        allowed: "one relaxation time per term of prony:N",
+                    });
                 }
                 for i in 1..=n {
                     params.push(pos(&format!("g_{i}"), "Pa"));
@@ -165,6 +196,39 @@ impl Model {
     /// Index of the parameter called `name`.
     pub fn index(&self, name: &str) -> Option<usize> {
         self.params.iter().position(|p| p.name == name)
+    }
+
+    /// The slot of `p` in a value vector, `None` when the model does not have it.
+    pub fn slot(&self, p: Parameter) -> Option<usize> {
+        match (&self.kind, p) {
+            (_, Parameter::GInf) => Some(0),
+            (ModelKind::StandardSolid, Parameter::G1) => Some(1),
+            (ModelKind::StandardSolid, Parameter::Eta) => Some(2),
+            (ModelKind::Prony { n }, Parameter::Term(i)) if (1..=*n).contains(&i) => Some(i),
+            (_, Parameter::Nu) => self.index("nu"),
+            _ => None,
+        }
+    }
+
+    /// The parameters that are shear moduli besides `g_inf`: `g_1`, or the Prony `g_1 .. g_N`.
+    pub fn moduli(&self) -> Vec<Parameter> {
+        match self.kind {
+            ModelKind::StandardSolid => vec![Parameter::G1],
+            ModelKind::Prony { n } => (1..=n).map(Parameter::Term).collect(),
+        }
+    }
+
+    /// The value of `p` in `values` (aligned with [`Model::params`]); `p` must be one of the
+    /// model's parameters (`g_inf` always is; `g_1` and `eta` in the standard solid).
+    pub fn get(&self, values: &[f64], p: Parameter) -> f64 {
+        self.slot(p).map_or(f64::NAN, |i| values[i])
+    }
+
+    /// Set `p` in `values` (a parameter the model does not have is ignored).
+    pub fn set(&self, values: &mut [f64], p: Parameter, value: f64) {
+        if let Some(i) = self.slot(p) {
+            values[i] = value;
+        }
     }
 
     /// The names a `--fix` accepts, for messages.
@@ -197,32 +261,34 @@ impl Model {
     /// `values` clamped into the box ([`BOX_G_INF`], [`BOX_P2`], [`BOX_P3`] with
     /// `p3 = p3_scale eta / g_inf^(3/5)`, [`BOX_NU`]).
     pub fn clamp(&self, values: &[f64], p3_scale: f64) -> Vec<f64> {
+        use Parameter::*;
         let mut v = values.to_vec();
-        let g_inf = v[0].clamp(BOX_G_INF.0, BOX_G_INF.1);
-        v[0] = g_inf;
-        let moduli = match self.kind {
-            ModelKind::StandardSolid => 1..2,
-            ModelKind::Prony { n } => 1..n + 1,
-        };
-        for x in &mut v[moduli] {
-            *x = x.clamp(g_inf / BOX_P2.1, g_inf / BOX_P2.0);
+        let g_inf = self.get(&v, GInf).clamp(BOX_G_INF.0, BOX_G_INF.1);
+        self.set(&mut v, GInf, g_inf);
+        for p in self.moduli() {
+            let x = self.get(&v, p).clamp(g_inf / BOX_P2.1, g_inf / BOX_P2.0);
+            self.set(&mut v, p, x);
         }
         if self.kind == ModelKind::StandardSolid {
             let c = g_inf.powf(ETA_GROUP_EXPONENT) / p3_scale;
-            v[2] = v[2].clamp(BOX_P3.0 * c, BOX_P3.1 * c);
+            let eta = self.get(&v, Eta).clamp(BOX_P3.0 * c, BOX_P3.1 * c);
+            self.set(&mut v, Eta, eta);
         }
-        if let Some(i) = self.index("nu") {
-            v[i] = v[i].clamp(BOX_NU.0, BOX_NU.1);
+        if self.slot(Nu).is_some() {
+            let nu = self.get(&v, Nu).clamp(BOX_NU.0, BOX_NU.1);
+            self.set(&mut v, Nu, nu);
         }
         v
     }
 
     /// The impact of `sphere` at `v0` (m/s) on the material with parameter `values`.
     pub fn impact(&self, sphere: Sphere, v0: f64, values: &[f64]) -> Result<Impact> {
-        let nu = self.index("nu").map(|i| values[i]);
+        use Parameter::*;
+        let nu = self.slot(Nu).map(|_| self.get(values, Nu));
+        let g_inf = self.get(values, GInf);
         match self.kind {
             ModelKind::StandardSolid => {
-                let (g_inf, g_1, eta) = (values[0], values[1], values[2]);
+                let (g_1, eta) = (self.get(values, G1), self.get(values, Eta));
                 let m = match (self.k_0, nu) {
                     (Some(k), _) => Material::new(g_inf, g_1, eta, k)?,
                     (None, Some(nu)) => Material::with_poisson(g_inf, g_1, eta, nu)?,
@@ -231,9 +297,10 @@ impl Model {
                 Impact::new(sphere, v0, m)
             }
             ModelKind::Prony { n } => {
-                let terms: Vec<(f64, f64)> =
-                    (0..n).map(|i| (values[1 + i], self.taus[i])).collect();
-                let shear = ShearProny::new(values[0], &terms)?;
+                let terms: Vec<(f64, f64)> = (0..n)
+                    .map(|i| (self.get(values, Term(i + 1)), self.taus[i]))
+                    .collect();
+                let shear = ShearProny::new(g_inf, &terms)?;
                 let bulk = match (self.k_0, nu) {
                     (Some(k), _) => BulkInput::Elastic(k),
                     (None, Some(nu)) => BulkInput::Poisson(nu),
@@ -249,36 +316,97 @@ impl Model {
     /// `eta_over_g_inf_3_5 = eta / g_inf^(3/5)`. For a Prony model `G_1 = sum g_i` and
     /// `eta = sum g_i tau_i` (the total relaxing modulus and the viscosity of the series).
     pub fn groups(&self, values: &[f64]) -> Vec<(&'static str, f64, Vec<f64>)> {
+        use Parameter::*;
         let np = self.params.len();
         let mut grad_p2 = vec![0.0; np];
         let mut grad_c = vec![0.0; np];
-        grad_p2[0] = 1.0;
-        grad_c[0] = -ETA_GROUP_EXPONENT;
+        self.set(&mut grad_p2, GInf, 1.0);
+        self.set(&mut grad_c, GInf, -ETA_GROUP_EXPONENT);
         let (g_1, eta) = match self.kind {
             ModelKind::StandardSolid => {
-                grad_p2[1] = -1.0;
-                grad_c[2] = 1.0;
-                (values[1], values[2])
+                self.set(&mut grad_p2, G1, -1.0);
+                self.set(&mut grad_c, Eta, 1.0);
+                (self.get(values, G1), self.get(values, Eta))
             }
             ModelKind::Prony { n } => {
-                let g1: f64 = values[1..=n].iter().sum();
-                let eta: f64 = (0..n).map(|i| values[1 + i] * self.taus[i]).sum();
+                let g = |i: usize| self.get(values, Term(i + 1));
+                let g1: f64 = (0..n).map(g).sum();
+                let eta: f64 = (0..n).map(|i| g(i) * self.taus[i]).sum();
                 for i in 0..n {
-                    grad_p2[1 + i] = -values[1 + i] / g1;
-                    grad_c[1 + i] = values[1 + i] * self.taus[i] / eta;
+                    self.set(&mut grad_p2, Term(i + 1), -g(i) / g1);
+                    self.set(&mut grad_c, Term(i + 1), g(i) * self.taus[i] / eta);
                 }
                 (g1, eta)
             }
         };
+        let g_inf = self.get(values, GInf);
         vec![
-            ("p2", values[0] / g_1, grad_p2),
+            ("p2", g_inf / g_1, grad_p2),
             (
                 "eta_over_g_inf_3_5",
-                eta / values[0].powf(ETA_GROUP_EXPONENT),
+                eta / g_inf.powf(ETA_GROUP_EXPONENT),
                 grad_c,
             ),
         ]
     }
+}
+
+/// The fixed relaxation times of `prony:N` (s): `N` log-spaced times over `MIN:MAX` (`range`),
+/// or by default from the measured contact times (the shortest / 100 to the longest x 100; one
+/// time: their geometric mean). Without contact times `range` is required. Empty for the
+/// standard solid.
+pub fn prony_times(kind: &ModelKind, range: Option<&str>, data: &Data) -> Result<Vec<f64>> {
+    let ModelKind::Prony { n } = *kind else {
+        return match range {
+            Some(_) => Err(Error::NotSupported {
+                solver: "fit",
+                what: "--tau-range applies to --model prony:N only".into(),
+            }),
+            None => Ok(Vec::new()),
+        };
+    };
+    let (lo, hi) = match range {
+        Some(s) => {
+            let bad = || Error::Parse {
+                what: "--tau-range",
+                input: crate::error::escape_text(s),
+                expected: "MIN:MAX (s) with 0 < MIN < MAX < inf".into(),
+            };
+            let (a, b) = s.split_once(':').ok_or_else(bad)?;
+            let a: f64 = a.trim().parse().map_err(|_| bad())?;
+            let b: f64 = b.trim().parse().map_err(|_| bad())?;
+            if !(a > 0.0 && a < b && b.is_finite()) {
+                return Err(bad());
+            }
+            (a, b)
+        }
+        None => {
+            let t: Vec<f64> = data
+                .observations
+                .iter()
+                .filter_map(|o| o.contact_time)
+                .collect();
+            if t.is_empty() {
+                return Err(Error::NotSupported {
+                    solver: "fit",
+                    what: "--model prony:N without contact times needs --tau-range MIN:MAX (s)"
+                        .into(),
+                });
+            }
+            let a = t.iter().copied().fold(f64::INFINITY, f64::min) / 100.0;
+            let b = t.iter().copied().fold(0.0, f64::max) * 100.0;
+            (a, b)
+        }
+    };
+    Ok((0..n)
+        .map(|i| {
+            if n == 1 {
+                (lo * hi).sqrt()
+            } else {
+                (lo.ln() + (hi / lo).ln() * i as f64 / (n - 1) as f64).exp()
+            }
+        })
+        .collect())
 }
 
 #[cfg(test)]

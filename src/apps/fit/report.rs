@@ -343,10 +343,11 @@ pub fn svg(path: &Path, r: &FitResult, curves: &[Curve]) -> Result<String> {
         }
     }
     if !(x0 < x1) {
-        return Err(Error::Unsupported(format!(
-            "{}: nothing to plot",
-            path.display()
-        )));
+        return Err(Error::NotSupported {
+            solver: "fit plot",
+            what: "nothing to plot (one velocity)".into(),
+        }
+        .at(path.display().to_string()));
     }
     let mut svg = String::new();
     {

@@ -16,6 +16,7 @@ use crate::error::{check, Result};
 
 pub mod carson;
 pub mod network;
+pub mod poles;
 pub mod prony;
 pub mod rheology;
 pub mod shift;

@@ -159,9 +159,11 @@ mod ting;
 use std::sync::OnceLock;
 
 use crate::error::{Error, Result};
-use crate::model::impact::{History, Outcome, Work};
+use crate::model::contact::{CanonicalOutcome, Contact};
+use crate::model::impact::{History, Method, Outcome, Work};
 use crate::model::material::Prony;
 use crate::model::tolerances;
+use crate::solvers::api::{require_unit_paraboloid, ImpactSolver, SolveOptions, SolverKind};
 use basis::*;
 use compression::*;
 use control::*;
@@ -506,7 +508,21 @@ fn hertz(c_inf: f64, history: bool) -> Outcome {
             h
         }),
         work: Work::default(),
-        solver: SOLVER_NAME,
+        solver: Method::Fast,
         fallback: None,
+    }
+}
+
+/// The `fast` solver behind the solver interface: [`impact`] on the contact's `G_eq`.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Fast;
+
+impl ImpactSolver for Fast {
+    fn kind(&self) -> SolverKind {
+        SolverKind::Fast
+    }
+    fn solve(&self, contact: &Contact, opts: &SolveOptions) -> Result<CanonicalOutcome> {
+        require_unit_paraboloid(contact, self.kind())?;
+        impact(&contact.g_eq, opts.rtol, opts.history).map(CanonicalOutcome::new)
     }
 }

@@ -286,7 +286,7 @@ pub(super) fn restitute<const K: usize>(
             evaluations: s.evaluations,
             levels: 1,
         },
-        solver: SOLVER_NAME,
+        solver: Method::Fast,
         fallback: None,
     })
 }

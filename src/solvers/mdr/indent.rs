@@ -10,6 +10,7 @@
 use super::exponential::ExpFoundation;
 use super::Foundation;
 use crate::error::{Error, Result};
+use crate::model::contact::Geometry;
 use crate::model::material::Prony;
 use crate::model::tolerances;
 use crate::solvers::indentation::Prescribed;
@@ -84,7 +85,7 @@ pub fn response(
     }
     let a_max = (radius * history.peak_depth()).sqrt();
     let dx = a_max / res.elements as f64;
-    let geom = Foundation::new(dx, radius, res.elements + 2);
+    let geom = Foundation::new(dx, &Geometry::Paraboloid { radius }, res.elements + 2);
     let mut f = ExpFoundation::new(geom, prony);
     let end = history.end_time();
     let dt_target = end / res.steps as f64;

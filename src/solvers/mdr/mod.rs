@@ -16,15 +16,22 @@
 //! (`m = R = v0 = G_inf = 1`, see [`crate::model::impact`]); [`indent`] drives the foundation with a
 //! prescribed indentation instead.
 
+mod adaptive;
 pub(crate) mod euler;
 pub(crate) mod exponential;
 pub mod indent;
+
+pub use adaptive::{euler_step_bound, pilot, pilot_material, run_resolution, solve_rtol};
 pub(crate) mod network;
 
 use crate::error::{Error, Result};
-use crate::model::impact::{History, Outcome, Work};
-use crate::model::material::{ElementModel, ElementNetwork, GeneralNetwork, Prony, StackedNetwork};
+pub use crate::model::contact::Network;
+use crate::model::contact::{CanonicalOutcome, Contact, Geometry};
+use crate::model::impact::Impact;
+use crate::model::impact::{History, Method, Outcome, Work};
+use crate::model::material::{ElementModel, Prony};
 use crate::model::tolerances;
+use crate::solvers::api::{ImpactSolver, SolveOptions, SolverKind};
 use euler::EulerFoundation;
 use exponential::ExpFoundation;
 use network::NetFoundation;
@@ -38,16 +45,17 @@ pub struct Foundation {
 }
 
 impl Foundation {
-    /// Foundation with spacing `dx` (m) for a sphere of radius `radius` (m), with at most
-    /// `capacity` elements.
-    pub fn new(dx: f64, radius: f64, capacity: usize) -> Self {
+    /// Foundation with spacing `dx` for the indenter `geometry` (a paraboloid: its `1 / R` is
+    /// kept, so that `g` costs two products), with at most `capacity` elements.
+    pub fn new(dx: f64, geometry: &Geometry, capacity: usize) -> Self {
         Self {
             dx,
-            inv_radius: 1.0 / radius,
+            inv_radius: geometry.inverse_radius(),
             capacity,
         }
     }
-    /// Equivalent profile at element `i`: `g(x_i) = x_i^2 / R`, `x_i = (i + 1/2) dx`.
+    /// Equivalent profile at element `i`: `g(x_i) = x_i^2 / R` ([`Geometry::profile`]),
+    /// `x_i = (i + 1/2) dx`.
     #[inline]
     pub fn g(&self, i: usize) -> f64 {
         let x = (i as f64 + 0.5) * self.dx;
@@ -98,33 +106,92 @@ impl Scheme {
     }
 }
 
-/// The material of a canonical problem in the two forms the schemes need.
+/// The material of a canonical problem in the forms the schemes need, with the geometry.
 #[derive(Debug, Clone)]
 pub struct CanonicalMaterial {
     /// Equivalent relaxation function (moduli / `G_inf`, times / time scale).
     pub prony: Prony,
     /// The element network in the same units.
     pub network: Network,
+    /// The indenter's shape (the canonical paraboloid today).
+    pub geometry: Geometry,
 }
 
-/// The element network of a canonical material.
-#[derive(Debug, Clone)]
-pub enum Network {
-    /// The standard solid's network of Eq. (8). [`Scheme::Exponential`] integrates the
-    /// standard solid through its closed-form `G_eq` ([`CanonicalMaterial::prony`]) and
-    /// [`Scheme::Euler`] through this network.
-    StandardSolid(ElementNetwork),
-    /// A general material's network built from `G` and `K` ([`GeneralNetwork`]), which both
-    /// schemes integrate ([`Scheme::Euler`] on its dashpot positions).
-    General(GeneralNetwork),
-    /// Two colliding bodies' networks in series ([`StackedNetwork`], docs/theory.md §8), never
-    /// combined into `G_tot`; [`Scheme::Exponential`] integrates it, [`Scheme::Euler`] refuses it.
-    Stacked(StackedNetwork),
+impl CanonicalMaterial {
+    /// The MDR's view of a contact: its `G_eq`, network and geometry.
+    pub fn of(contact: &Contact) -> Self {
+        Self {
+            prony: (*contact.g_eq).clone(),
+            network: contact.network.clone(),
+            geometry: contact.geometry,
+        }
+    }
 }
 
-/// The one-line refusal of [`Scheme::Euler`] for two viscoelastic bodies.
+/// The impact's material in canonical units, in the forms the MDR schemes need (the network is
+/// chosen by shape in [`Impact::contact`]).
+pub fn canonical_material(impact: &Impact) -> Result<CanonicalMaterial> {
+    Ok(CanonicalMaterial::of(&impact.contact()?))
+}
+
+/// An MDR scheme behind the solver interface: `mdr` ([`Scheme::Exponential`]) or `mdr-euler`
+/// ([`Scheme::Euler`]), to `rtol` ([`solve_rtol`]) or on an explicit resolution
+/// ([`run_resolution`], within the work limit).
+#[derive(Debug, Clone, Copy)]
+pub struct Mdr(pub Scheme);
+
+impl ImpactSolver for Mdr {
+    fn kind(&self) -> SolverKind {
+        match self.0 {
+            Scheme::Euler => SolverKind::MdrEuler,
+            Scheme::Exponential => SolverKind::Mdr,
+        }
+    }
+    fn solve(&self, contact: &Contact, opts: &SolveOptions) -> Result<CanonicalOutcome> {
+        let scheme = self.0;
+        let material = CanonicalMaterial::of(contact);
+        let o = match opts.resolution {
+            Some(r) => {
+                let needed = (r.elements as u64).saturating_mul(r.steps as u64);
+                if needed > opts.work_limit {
+                    return Err(Error::WorkLimit {
+                        solver: scheme.name(),
+                        what: "elements x steps",
+                        needed,
+                        limit: opts.work_limit,
+                    });
+                }
+                let layout = pilot_material(&material)?;
+                run_resolution(
+                    scheme,
+                    &material,
+                    &layout,
+                    r.elements,
+                    r.steps,
+                    opts.history,
+                )?
+            }
+            None => solve_rtol(scheme, &material, opts.rtol, opts.history, opts.work_limit)?,
+        };
+        Ok(CanonicalOutcome::new(o))
+    }
+}
+
+/// The one-line refusal of [`Scheme::Euler`] for two viscoelastic bodies (the text of its
+/// [`Error::NotSupported`], [`euler_refusal`]).
 pub const EULER_GENERAL_UNSUPPORTED: &str = "mdr-euler: the paper's explicit Euler runs on one \
      body's element network; use mdr, fast or reference for two viscoelastic bodies";
+
+/// The refusal of [`Scheme::Euler`] for two viscoelastic bodies; prints
+/// [`EULER_GENERAL_UNSUPPORTED`].
+pub fn euler_refusal() -> Error {
+    Error::NotSupported {
+        solver: "mdr-euler",
+        what: "the paper's explicit Euler runs on one body's element network; use mdr, fast or \
+               reference for two viscoelastic bodies"
+            .into(),
+    }
+}
 
 /// The step interface of the exponential scheme's foundations: the standard solid's through
 /// `G_eq` ([`ExpFoundation`]) and the general network ([`NetFoundation`]).
@@ -324,7 +391,17 @@ pub fn run_exponential(
     capacity: usize,
     history: bool,
 ) -> Result<Outcome> {
-    let geom = Foundation::new(grid.dx, 1.0, capacity);
+    run_exponential_on(&Geometry::UNIT_SPHERE, prony, grid, capacity, history)
+}
+
+fn run_exponential_on(
+    geometry: &Geometry,
+    prony: &Prony,
+    grid: &Grid,
+    capacity: usize,
+    history: bool,
+) -> Result<Outcome> {
+    let geom = Foundation::new(grid.dx, geometry, capacity);
     run_stepper(ExpFoundation::new(geom, prony), grid, capacity, history)
 }
 
@@ -336,7 +413,17 @@ pub fn run_network<N: ElementModel>(
     capacity: usize,
     history: bool,
 ) -> Result<Outcome> {
-    let geom = Foundation::new(grid.dx, 1.0, capacity);
+    run_network_on(&Geometry::UNIT_SPHERE, network, grid, capacity, history)
+}
+
+fn run_network_on<N: ElementModel>(
+    geometry: &Geometry,
+    network: &N,
+    grid: &Grid,
+    capacity: usize,
+    history: bool,
+) -> Result<Outcome> {
+    let geom = Foundation::new(grid.dx, geometry, capacity);
     run_stepper(
         NetFoundation::new(geom, network.clone()),
         grid,
@@ -428,7 +515,7 @@ fn run_stepper<F: Stepper>(
     }
     let (max_elements, element_updates) = f.counters();
     Ok(finish(
-        "mdr",
+        Method::Mdr,
         v,
         t_end,
         &tr,
@@ -492,7 +579,7 @@ pub fn run_euler(
     capacity: usize,
     history: bool,
 ) -> Result<Outcome> {
-    let geom = Foundation::new(grid.dx, 1.0, capacity);
+    let geom = Foundation::new(grid.dx, &material.geometry, capacity);
     match &material.network {
         Network::StandardSolid(n) => {
             euler_loop(EulerFoundation::new(geom, *n), grid, capacity, history)
@@ -503,7 +590,7 @@ pub fn run_euler(
             capacity,
             history,
         ),
-        Network::Stacked(_) => Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string())),
+        Network::Stacked(_) => Err(euler_refusal()),
     }
 }
 
@@ -571,7 +658,7 @@ fn euler_loop<N: euler::Dashpots>(
         }
     }
     Ok(finish(
-        "mdr-euler",
+        Method::MdrEuler,
         v,
         t_end,
         &tr,
@@ -581,7 +668,7 @@ fn euler_loop<N: euler::Dashpots>(
 }
 
 fn finish(
-    solver: &'static str,
+    solver: Method,
     v_end: f64,
     t_end: f64,
     tr: &Tracker,
@@ -610,289 +697,4 @@ fn finish(
         solver,
         fallback: None,
     }
-}
-
-/// Stability bound of the explicit Euler step (canonical units): `min(2 tau, 2/omega)`.
-pub fn euler_step_bound(prony: &Prony, contact_radius: f64) -> f64 {
-    let relax = 2.0 * prony.min_tau();
-    let omega = (8.0 * prony.glassy() * contact_radius).sqrt();
-    relax.min(2.0 / omega)
-}
-
-/// Estimate the layout of an impact with coarse exponential-MDR runs, restarting with a
-/// rescaled grid when the first guess (the glassy Hertz impact) was far off.
-pub fn pilot(prony: &Prony) -> Result<Layout> {
-    pilot_with(prony.glassy(), |grid, capacity| {
-        run_exponential(prony, grid, capacity, false)
-    })
-}
-
-/// [`pilot`] for a canonical material: a general material's layout comes from coarse runs of
-/// its own network (glassy modulus from the network's instantaneous stiffness), the standard
-/// solid's from [`pilot`] on its `G_eq`.
-pub fn pilot_material(material: &CanonicalMaterial) -> Result<Layout> {
-    match &material.network {
-        Network::General(net) => pilot_with(net.entry_stiffness(0.0).0, |grid, capacity| {
-            run_network(net, grid, capacity, false)
-        }),
-        Network::Stacked(net) => pilot_with(net.entry_stiffness(0.0).0, |grid, capacity| {
-            run_network(net, grid, capacity, false)
-        }),
-        Network::StandardSolid(_) => pilot(&material.prony),
-    }
-}
-
-fn pilot_with(glassy: f64, run: impl Fn(&Grid, usize) -> Result<Outcome>) -> Result<Layout> {
-    // glassy Hertz: k = 16/3 G_eq(0), d = (5/(4k))^(2/5), a = sqrt(d), t_c = 2.943 d
-    let k = 16.0 / 3.0 * glassy;
-    let d = (1.25 / k).powf(0.4);
-    let mut layout = Layout {
-        contact_radius: d.sqrt(),
-        compression_time: 1.4716 * d,
-        contact_time: 2.9433 * d,
-    };
-    let (n, m) = (tolerances::PILOT_ELEMENTS, tolerances::PILOT_STEPS);
-    for _ in 0..tolerances::PILOT_MAX_RESTARTS {
-        let mut grid = Grid::from_layout(&layout, n, m);
-        grid.max_steps = 8 * m as u64;
-        match run(&grid, 8 * n) {
-            Ok(o) => {
-                let new = Layout {
-                    contact_radius: o.max_contact_radius,
-                    compression_time: o.time_of_max_indentation,
-                    contact_time: o.contact_time,
-                };
-                // The restitution of a nearly plastic impact (e ~ 1e-4) is a slow creep whose
-                // coarse estimate can flip between values: the layout is judged by the contact
-                // radius and the compression time, and the longer contact time is kept.
-                let off = (new.contact_radius / layout.contact_radius)
-                    .max(layout.contact_radius / new.contact_radius)
-                    .max(new.compression_time / layout.compression_time)
-                    .max(layout.compression_time / new.compression_time)
-                    .max(new.contact_time / layout.contact_time);
-                layout = Layout {
-                    contact_time: new.contact_time.max(layout.contact_time),
-                    ..new
-                };
-                if off < 2.0 {
-                    return Ok(layout);
-                }
-            }
-            Err(Error::WorkLimit { .. }) => {
-                layout.contact_radius *= 4.0;
-            }
-            Err(Error::NoConvergence { .. }) => {
-                layout.contact_time *= 8.0;
-                layout.compression_time *= 2.0;
-            }
-            Err(e) => return Err(e),
-        }
-    }
-    Err(Error::NoConvergence {
-        what: "mdr pilot run (layout estimate)",
-        iterations: tolerances::PILOT_MAX_RESTARTS as u64,
-    })
-}
-
-/// Run an MDR scheme on an explicit resolution (elements per contact radius, steps per contact
-/// time) laid out from `layout`.
-pub fn run_resolution(
-    scheme: Scheme,
-    material: &CanonicalMaterial,
-    layout: &Layout,
-    elements: usize,
-    steps: usize,
-    history: bool,
-) -> Result<Outcome> {
-    let grid = Grid::from_layout(layout, elements, steps);
-    let capacity = capacity_for(grid.dx, layout.contact_radius);
-    match (scheme, &material.network) {
-        (Scheme::Exponential, Network::General(net)) => run_network(net, &grid, capacity, history),
-        (Scheme::Exponential, Network::Stacked(net)) => run_network(net, &grid, capacity, history),
-        (Scheme::Exponential, Network::StandardSolid(_)) => {
-            run_exponential(&material.prony, &grid, capacity, history)
-        }
-        (Scheme::Euler, Network::Stacked(_)) => {
-            Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string()))
-        }
-        (Scheme::Euler, Network::StandardSolid(_) | Network::General(_)) => {
-            let bound = euler_step_bound(&material.prony, layout.contact_radius);
-            let dt = grid.dt_compression.max(grid.dt_restitution);
-            if dt > bound {
-                return Err(Error::UnstableStep {
-                    scheme: "mdr-euler",
-                    dt,
-                    bound,
-                });
-            }
-            run_euler(material, &grid, capacity, history)
-        }
-    }
-}
-
-/// Error estimate of the finest level from the signed CoR differences between successive
-/// levels, or `None` while the sequence does not look asymptotic.
-///
-/// The last three differences must share their sign and shrink by ratios between `sqrt 2` and
-/// `2^(p_max + 1)` (`p_max` the scheme's order): MDR sequences have pre-asymptotic plateaus and
-/// sign changes (the element sum and the contact-edge events interact), and a single small
-/// difference there is an accident, not convergence. The estimate is `delta_L / (2^p - 1)`
-/// with `p` the observed order `log2` of the last ratio, floored at 1 (where relaxation is fast
-/// against the impact the force density jumps at the contact edge and the element sum converges
-/// at first order only). When the last two differences are both below `tiny` / 100 the
-/// sequence is at round-off and the larger of them is the estimate.
-fn accept(deltas: &[f64], p_max: f64, tiny: f64) -> Option<f64> {
-    let n = deltas.len();
-    if n >= 2 && deltas[n - 1].abs().max(deltas[n - 2].abs()) <= 0.01 * tiny {
-        return Some(deltas[n - 1].abs().max(deltas[n - 2].abs()));
-    }
-    if n < 3 {
-        return None;
-    }
-    let (d0, d1, d2) = (deltas[n - 3], deltas[n - 2], deltas[n - 1]);
-    if d0.signum() != d1.signum() || d1.signum() != d2.signum() || d2 == 0.0 {
-        return None;
-    }
-    let p_max = p_max.max(1.0);
-    let (lo, hi) = (2f64.sqrt(), 2f64.powf(p_max + 1.0));
-    let (r1, r2) = (d0 / d1, d1 / d2);
-    if !(lo..=hi).contains(&r1) || !(lo..=hi).contains(&r2) {
-        return None;
-    }
-    let order = r2.log2().clamp(1.0, p_max);
-    Some(d2.abs() / (2f64.powf(order) - 1.0))
-}
-
-/// Solve an impact with an MDR scheme to a requested relative accuracy of the CoR.
-///
-/// Adaptive refinement from a pilot layout: each level doubles the steps per contact time
-/// (and, for the second-order [`Scheme::Exponential`], the elements; for [`Scheme::Euler`],
-/// the elements every other level, since its time error is first order). With `delta_L` the
-/// change of the CoR between levels, a level is accepted when the differences look asymptotic
-/// and the error estimate of `accept` (private, documented at its definition) is below `MDR_SAFETY * rtol |e|`.
-pub fn solve_rtol(
-    scheme: Scheme,
-    material: &CanonicalMaterial,
-    rtol: f64,
-    history: bool,
-    work_limit: u64,
-) -> Result<Outcome> {
-    if let (Scheme::Euler, Network::Stacked(_)) = (scheme, &material.network) {
-        return Err(Error::Unsupported(EULER_GENERAL_UNSUPPORTED.to_string()));
-    }
-    let layout = pilot_material(material)?;
-    let (mut n, mut m) = match scheme {
-        Scheme::Exponential => (tolerances::MDR_START_ELEMENTS, tolerances::MDR_START_STEPS),
-        Scheme::Euler => (
-            tolerances::MDR_START_ELEMENTS,
-            2 * tolerances::MDR_START_STEPS,
-        ),
-    };
-    if scheme == Scheme::Euler {
-        // respect the stability bound with a margin (the paper's choice of a small enough step)
-        let bound = euler_step_bound(&material.prony, layout.contact_radius);
-        let grid = Grid::from_layout(&layout, n, m);
-        let dt = grid.dt_compression.max(grid.dt_restitution);
-        if dt > 0.5 * bound {
-            m = ((m as f64) * dt / (0.5 * bound)).ceil() as usize;
-        }
-    }
-    let mut work = Work::default();
-    let mut prev: Option<f64> = None;
-    let mut deltas: Vec<f64> = Vec::new();
-    // the relative estimate of the last level when its sequence looked asymptotic
-    let mut asymptotic: Option<f64> = None;
-    let mut last_change = f64::INFINITY;
-    let refuse = |levels: u32, asymptotic: Option<f64>, last_change: f64| match asymptotic {
-        Some(estimate) => Error::AccuracyNotReached {
-            solver: scheme.name(),
-            rtol,
-            estimate,
-            required: tolerances::MDR_SAFETY * rtol,
-            levels,
-        },
-        None => Error::NotAsymptotic {
-            solver: scheme.name(),
-            rtol,
-            last_change,
-            levels,
-        },
-    };
-    // element updates of a level with `n` elements per contact radius and `m` steps
-    let level_work = |n: usize, m: usize| {
-        (capacity_for(layout.contact_radius / n as f64, layout.contact_radius) as u64 / 4)
-            .saturating_mul(m as u64 + 8)
-    };
-    let refine = |level: u32, n: usize, m: usize| match scheme {
-        Scheme::Exponential => (2 * n, 2 * m),
-        Scheme::Euler if level % 2 == 1 => (2 * n, 2 * m),
-        Scheme::Euler => (n, 2 * m),
-    };
-    for level in 0..tolerances::MDR_MAX_LEVELS {
-        let predicted = level_work(n, m);
-        if work.element_updates.saturating_add(predicted) > work_limit {
-            if level == 0 {
-                // the coarsest grid the stability bound allows is already over the limit
-                return Err(Error::WorkLimit {
-                    solver: scheme.name(),
-                    what: "element updates of the coarsest stable grid",
-                    needed: predicted,
-                    limit: work_limit,
-                });
-            }
-            return Err(refuse(level, asymptotic, last_change));
-        }
-        let mut o = run_resolution(scheme, material, &layout, n, m, history)?;
-        work.steps += o.work.steps;
-        work.element_updates += o.work.element_updates;
-        work.elements = work.elements.max(o.work.elements);
-        work.levels = level + 1;
-        if let Some(p) = prev {
-            deltas.push(o.cor - p);
-            let scale = o.cor.abs().max(1e-300);
-            last_change = (o.cor - p).abs() / scale;
-            asymptotic = None;
-            if let Some(est) = accept(&deltas, scheme.time_order(), rtol * scale) {
-                if est <= tolerances::MDR_SAFETY * rtol * scale {
-                    o.work = work;
-                    o.cor_error_estimate = Some(est / scale);
-                    return Ok(o);
-                }
-                asymptotic = Some(est / scale);
-                // the asymptotic rate tells how many more levels rtol needs: refuse now if
-                // their work is over the limit, instead of after it. The rate is taken at
-                // least at the scheme's order (error / 2^p per level), so that only a request
-                // out of reach even at full order is refused early (the observed rate can
-                // still be pre-asymptotic)
-                let k = deltas.len();
-                let observed = if k >= 2 {
-                    (deltas[k - 2] / deltas[k - 1]).abs()
-                } else {
-                    0.0
-                };
-                let rate = observed.max(2f64.powf(scheme.time_order()));
-                if rate > 1.0 {
-                    let more = ((est / (tolerances::MDR_SAFETY * rtol * scale)).ln() / rate.ln())
-                        .ceil()
-                        .clamp(1.0, f64::from(tolerances::MDR_MAX_LEVELS));
-                    let (mut nn, mut mm, mut needed) = (n, m, work.element_updates);
-                    for j in 0..more as u32 {
-                        (nn, mm) = refine(level + j, nn, mm);
-                        needed = needed.saturating_add(level_work(nn, mm));
-                    }
-                    if needed > work_limit {
-                        return Err(Error::WorkLimit {
-                            solver: scheme.name(),
-                            what: "element updates predicted to reach rtol",
-                            needed,
-                            limit: work_limit,
-                        });
-                    }
-                }
-            }
-        }
-        prev = Some(o.cor);
-        (n, m) = refine(level, n, m);
-    }
-    Err(refuse(tolerances::MDR_MAX_LEVELS, asymptotic, last_change))
 }

@@ -196,9 +196,10 @@ pub fn generate_reference(dir: &Path) -> Result<Written> {
         files.push(dir.join(&name));
         // impact: reference solver
         let o = impact_sampled(&prony, IMPACT_RTOL, IMPACT_SAMPLES)?;
-        let h = o.history.as_ref().ok_or(Error::Unsupported(
-            "reference impact returned no history".into(),
-        ))?;
+        let h = o
+            .history
+            .as_ref()
+            .ok_or(Error::Internal("reference impact returned no history"))?;
         let mut csv = String::from("t,d,v,force,a\n");
         for i in 0..h.len() {
             let _ = writeln!(

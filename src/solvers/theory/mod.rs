@@ -15,16 +15,19 @@
 //! - [`files`]: the reference force histories written to `reference/`;
 //! - [`bromwich`]: `G_eq(t)` of a general material by Talbot inversion of the Carson formula, a
 //!   route independent of the pole computation in `material::carson`;
-//! - [`poles`]: `G_eq(t)` and two bodies' `G_tot(t)` as exact Prony series from relaxation times
-//!   found as roots in the time domain, the series the reference solver integrates (no code
-//!   shared with `material::carson`, which `fast` uses).
+//! - [`poles`] (now [`crate::model::material::poles`], re-exported here): `G_eq(t)` and two
+//!   bodies' `G_tot(t)` as exact Prony series from relaxation times found as roots in the time
+//!   domain, the series the reference solver integrates
+//!   ([`crate::model::contact::Contact::independent_g_eq`]; no code shared with
+//!   `material::carson`, which `fast` uses);
+//! - [`Reference`]: the reference solver behind the solver interface.
 //!
 //! Every tolerance used by this module is a named constant below.
 
 pub mod asymptotes;
 pub mod bromwich;
 pub mod files;
-pub mod poles;
+pub use crate::model::material::poles;
 pub mod reference;
 pub mod viscoelastic;
 
@@ -33,6 +36,34 @@ pub use crate::model::hertz::{hertz_outcome, HertzImpact, HERTZ_I};
 pub use files::generate_reference;
 pub use reference::impact;
 pub use viscoelastic::{response, separation_time, IndentSample};
+
+use crate::error::Result;
+use crate::model::contact::{CanonicalOutcome, Contact};
+use crate::model::tolerances;
+use crate::solvers::api::{require_unit_paraboloid, ImpactSolver, SolveOptions, SolverKind};
+
+/// The reference solver behind the solver interface, on the contact's independently derived
+/// `G_eq` ([`Contact::independent_g_eq`]): the CoR and the characteristic values, or with
+/// `history` the histories on a uniform grid of [`tolerances::HISTORY_SAMPLES`] samples (forces
+/// from the dense solution, [`reference::impact_sampled`]).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Reference;
+
+impl ImpactSolver for Reference {
+    fn kind(&self) -> SolverKind {
+        SolverKind::Reference
+    }
+    fn solve(&self, contact: &Contact, opts: &SolveOptions) -> Result<CanonicalOutcome> {
+        require_unit_paraboloid(contact, self.kind())?;
+        let prony = contact.independent_g_eq()?;
+        let o = if opts.history {
+            reference::impact_sampled(prony, opts.rtol.max(1e-13), tolerances::HISTORY_SAMPLES)?
+        } else {
+            impact(prony, opts.rtol, false)?
+        };
+        Ok(CanonicalOutcome::new(o))
+    }
+}
 
 /// Relative tolerance of the quadrature-based Lee–Radok/Ting integrals (absolute tolerance is this
 /// times the natural scale of the integral).

@@ -311,30 +311,3 @@ pub fn series(a: &Prony, b: &Prony) -> Result<Prony> {
     let pair = Pair::new(a.relaxed, &pairs(a), b.relaxed, &pairs(b));
     combine(&pair, Combination::Series, relaxed)
 }
-
-/// The relaxation function the reference solver integrates for `impact` (SI: Pa, s), derived
-/// without `material::carson`: the closed form of docs/theory.md §2 for a material of the
-/// standard solid's shape ([`Material::as_standard_solid`]), [`equivalent_relaxation`]
-/// otherwise, and for two bodies each body's by the same rule combined by [`series`] (a rigid
-/// body drops out).
-pub fn reference_relaxation(impact: &crate::Impact) -> Result<Prony> {
-    let one = |m: &Material| -> Result<Prony> {
-        match m.as_standard_solid() {
-            Some(s) => Ok(s.equivalent_relaxation()),
-            None => equivalent_relaxation(m),
-        }
-    };
-    if let Some(m) = impact.half_space() {
-        return one(m);
-    }
-    let b = impact
-        .bodies()
-        .ok_or(Error::Internal("an impact is a half-space or two bodies"))?;
-    match (b.a().material().material(), b.b().material().material()) {
-        (Some(a), Some(b)) => series(&one(a)?, &one(b)?),
-        (Some(m), None) | (None, Some(m)) => one(m),
-        (None, None) => Err(Error::Internal(
-            "two rigid bodies have no relaxation function",
-        )),
-    }
-}

@@ -1,0 +1,340 @@
+//! The analysis of a fit at its estimate: covariance from the Jacobian's singular values,
+//! confidence intervals (normal or Student's `t`), identifiability of parameters and groups, and
+//! the verdict.
+
+use super::*;
+
+/// Uncertainty and identifiability at the estimate (module docs).
+pub(super) fn analyse(
+    ctx: &Ctx,
+    (best_ssr, values): (f64, Vec<f64>),
+    others: &[(f64, Vec<f64>)],
+    fixed: &[Option<f64>],
+    free: &[usize],
+    moving: &[usize],
+) -> Result<FitResult> {
+    let model = ctx.model;
+    let np = model.params.len();
+    let coords = ctx.coords(&values);
+    let residuals = ctx.residual_list(&values, FIT_RTOL)?;
+    let n = residuals.len();
+    let ss: f64 = residuals.iter().map(|r| r.weighted * r.weighted).sum();
+    let rms_residual = (ss / n as f64).sqrt();
+
+    // SVD of the weighted Jacobian over every free coordinate
+    let cols = if free.is_empty() {
+        Vec::new()
+    } else {
+        ctx.jacobian(&coords, free)?
+    };
+    let j = nalgebra::DMatrix::from_fn(n, free.len(), |i, k| cols[k][i]);
+    let (sv, v_t) = if free.is_empty() {
+        (Vec::new(), nalgebra::DMatrix::zeros(0, 0))
+    } else {
+        let svd = j.svd(false, true);
+        let v_t = svd.v_t.ok_or(Error::NonFinite {
+            what: "fit Jacobian SVD",
+            value: f64::NAN,
+        })?;
+        (svd.singular_values.iter().copied().collect::<Vec<_>>(), v_t)
+    };
+    for &s in &sv {
+        if !s.is_finite() {
+            return Err(Error::NonFinite {
+                what: "fit Jacobian singular value",
+                value: s,
+            });
+        }
+    }
+    let s_max = sv.iter().copied().fold(0.0, f64::max);
+    let in_range = |k: usize| sv[k] > FIT_NULL_RATIO * s_max && s_max > 0.0;
+    let rank = (0..sv.len()).filter(|&k| in_range(k)).count();
+    let dof = n.saturating_sub(rank);
+    let noise_scale = if ctx.data.noise_known() {
+        Some(1.0)
+    } else if dof > 0 {
+        Some((ss / dof as f64).sqrt())
+    } else {
+        None
+    };
+    let quantile = match noise_scale {
+        None => None,
+        Some(_) if ctx.data.noise_known() => Some(normal_quantile()),
+        Some(_) => Some(t_quantile(dof)),
+    };
+    // covariance on the identified subspace, in the full coordinate numbering
+    let covariance = noise_scale.map(|s| {
+        let mut c = vec![vec![0.0; np]; np];
+        for k in (0..sv.len()).filter(|&k| in_range(k)) {
+            for (a, &ia) in free.iter().enumerate() {
+                for (b, &ib) in free.iter().enumerate() {
+                    c[ia][ib] += s * s * v_t[(k, a)] * v_t[(k, b)] / (sv[k] * sv[k]);
+                }
+            }
+        }
+        c
+    });
+    // the null-space component of a direction a (full numbering) over the free coordinates:
+    // the norm of what is left after projecting it onto the identified right singular vectors,
+    // relative to its free part (independent of the basis the SVD picks for the null space, and
+    // right when the SVD has fewer rows than free coordinates: n < p leaves p - n null
+    // directions without a row of v_t)
+    let null_component = |a: &[f64]| -> f64 {
+        let norm2 = free.iter().map(|&i| a[i] * a[i]).sum::<f64>();
+        if norm2 == 0.0 {
+            return 0.0;
+        }
+        let in_span: f64 = (0..sv.len())
+            .filter(|&k| in_range(k))
+            .map(|k| {
+                let p = free
+                    .iter()
+                    .enumerate()
+                    .map(|(b, &ib)| v_t[(k, b)] * a[ib])
+                    .sum::<f64>();
+                p * p
+            })
+            .sum();
+        (1.0 - in_span / norm2).max(0.0).sqrt()
+    };
+    let estimate = |name: String,
+                    unit: &'static str,
+                    a: &[f64],
+                    coord: f64,
+                    back: &dyn Fn(f64) -> f64,
+                    is_fixed: bool|
+     -> Estimate {
+        let value = back(coord);
+        if is_fixed {
+            return Estimate {
+                name,
+                unit,
+                value: Some(value),
+                ci95: Some((value, value)),
+                se: Some(0.0),
+                identifiable: true,
+                fixed: true,
+                note: "fixed".into(),
+            };
+        }
+        if null_component(a) > FIT_NULL_COMPONENT {
+            return Estimate {
+                name,
+                unit,
+                value: None,
+                ci95: None,
+                se: None,
+                identifiable: false,
+                fixed: false,
+                note: "not determined by the data (a null direction of the Jacobian)".into(),
+            };
+        }
+        let (Some(c), Some(q)) = (&covariance, quantile) else {
+            return Estimate {
+                name,
+                unit,
+                value: Some(value),
+                ci95: None,
+                se: None,
+                identifiable: false,
+                fixed: false,
+                note: "no residual degrees of freedom to estimate the noise (give cor_sd)".into(),
+            };
+        };
+        let var: f64 = (0..np)
+            .map(|i| (0..np).map(|k| a[i] * c[i][k] * a[k]).sum::<f64>())
+            .sum();
+        let se = var.max(0.0).sqrt();
+        let half = q * se;
+        let lo = back(coord - half);
+        let hi = back(coord + half);
+        let wide = !(half <= FIT_MAX_HALF_WIDTH);
+        Estimate {
+            name,
+            unit,
+            value: Some(value),
+            ci95: Some((lo.min(hi), lo.max(hi))),
+            se: Some(se),
+            identifiable: !wide,
+            fixed: false,
+            note: if wide {
+                "poorly determined: the 95 % interval spans more than a factor 10 either way \
+                 (in the parameter's coordinate)"
+                    .into()
+            } else {
+                String::new()
+            },
+        }
+    };
+    let parameters: Vec<Estimate> = model
+        .params
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let mut a = vec![0.0; np];
+            a[i] = 1.0;
+            estimate(
+                p.name.clone(),
+                p.unit,
+                &a,
+                coords[i],
+                &|c| p.kind.from_coord(c),
+                fixed[i].is_some(),
+            )
+        })
+        .collect();
+    let groups: Vec<Estimate> = model
+        .groups(&values)
+        .into_iter()
+        .map(|(name, value, mut grad)| {
+            // coordinates: the Poisson coordinate does not enter; fixed ones do not vary
+            for (g, f) in grad.iter_mut().zip(fixed) {
+                if f.is_some() {
+                    *g = 0.0;
+                }
+            }
+            let all_fixed = grad.iter().all(|g| *g == 0.0);
+            let unit = if name == "p2" { "1" } else { "Pa^(2/5) s" };
+            estimate(
+                name.to_string(),
+                unit,
+                &grad,
+                value.ln(),
+                &f64::exp,
+                all_fixed,
+            )
+        })
+        .collect();
+    let mut parameters = parameters;
+    let mut groups = groups;
+    if let (Some(s), Some(q)) = (noise_scale, quantile) {
+        let threshold = q * q * s * s;
+        // the profile likelihood where the Wald interval is too wide to trust
+        for &i in moving {
+            let e = &mut parameters[i];
+            if e.identifiable || e.value.is_none() || e.ci95.is_none() {
+                continue;
+            }
+            let kind = model.params[i].kind;
+            let (lo, hi) = ctx.profile(&coords, best_ssr, i, moving, threshold);
+            let back = |c: Option<f64>| c.map(|c| kind.from_coord(c));
+            match (back(lo), back(hi)) {
+                (Some(a), Some(b)) => {
+                    e.ci95 = Some((a.min(b), a.max(b)));
+                    e.identifiable = true;
+                    e.note = "profile-likelihood interval (the Wald interval was too wide)".into();
+                }
+                (a, b) => {
+                    e.ci95 = None;
+                    e.note = format!(
+                        "not determined: the profile likelihood stays within the 95 % threshold \
+                         {} (bounds found: {}, {})",
+                        "up to four decades (or the nu range) from the estimate",
+                        a.map_or("none".to_string(), |x| format!("{x:.4e}")),
+                        b.map_or("none".to_string(), |x| format!("{x:.4e}"))
+                    );
+                }
+            }
+        }
+        // another point met by the fit (a minimum of another start, or of a nu level with nu
+        // held) whose misfit is within the likelihood-ratio threshold: the profile of every
+        // parameter lies at or below it there, so every interval is widened to contain it (and
+        // judged again by its reach)
+        for (other_ssr, other) in others.iter().filter(|o| o.0 - best_ssr <= threshold) {
+            let note = format!(
+                "interval widened to another point within the 95 % threshold of the misfit (SSR \
+                 {other_ssr:.4e} against {best_ssr:.4e})"
+            );
+            let widen = |e: &mut Estimate, v: f64, to_coord: &dyn Fn(f64) -> f64| {
+                let (Some((lo, hi)), Some(x), false) = (e.ci95, e.value, e.fixed) else {
+                    return;
+                };
+                if lo <= v && v <= hi {
+                    return;
+                }
+                let (lo, hi) = (lo.min(v), hi.max(v));
+                e.ci95 = Some((lo, hi));
+                e.note.clone_from(&note);
+                let reach = (to_coord(lo) - to_coord(x))
+                    .abs()
+                    .max((to_coord(hi) - to_coord(x)).abs());
+                if !(reach <= FIT_MAX_HALF_WIDTH) {
+                    e.identifiable = false;
+                    e.note
+                        .push_str(", which spans more than a factor 10 either way");
+                }
+            };
+            for ((e, v), p) in parameters.iter_mut().zip(other).zip(&model.params) {
+                widen(e, *v, &|x| p.kind.to_coord(x));
+            }
+            for (e, g) in groups.iter_mut().zip(model.groups(other)) {
+                widen(e, g.1, &f64::ln);
+            }
+        }
+    }
+    let verdict = verdict(&parameters, &groups);
+    Ok(FitResult {
+        model: model.clone(),
+        data: ctx.data.clone(),
+        values,
+        fixed: fixed.to_vec(),
+        parameters,
+        groups,
+        residuals,
+        rms_residual,
+        dof,
+        noise_scale,
+        quantile,
+        singular_values: sv,
+        covariance,
+        solves: ctx.solves.get(),
+        verdict,
+        conditional_on_nu: None,
+        goodness: None,
+        warnings: Vec::new(),
+    })
+}
+
+/// One line: which parameters and groups the data determine.
+pub(super) fn verdict(parameters: &[Estimate], groups: &[Estimate]) -> String {
+    let names = |list: &[&Estimate]| {
+        if list.is_empty() {
+            "none".to_string()
+        } else {
+            list.iter()
+                .map(|e| e.name.as_str())
+                .collect::<Vec<_>>()
+                .join(", ")
+        }
+    };
+    let det: Vec<&Estimate> = parameters
+        .iter()
+        .chain(groups)
+        .filter(|e| e.identifiable && !e.fixed)
+        .collect();
+    let not: Vec<&Estimate> = parameters
+        .iter()
+        .chain(groups)
+        .filter(|e| !e.identifiable)
+        .collect();
+    format!(
+        "determined by the data: {}; not determined: {}",
+        names(&det),
+        names(&not)
+    )
+}
+
+/// The 97.5 % quantile of the standard normal distribution.
+pub fn normal_quantile() -> f64 {
+    use statrs::distribution::{ContinuousCDF, Normal};
+    Normal::standard().inverse_cdf(0.975)
+}
+
+/// The 97.5 % quantile of Student's `t` with `dof >= 1` degrees of freedom.
+pub fn t_quantile(dof: usize) -> f64 {
+    use statrs::distribution::{ContinuousCDF, StudentsT};
+    match StudentsT::new(0.0, 1.0, dof.max(1) as f64) {
+        Ok(t) => t.inverse_cdf(0.975),
+        Err(_) => f64::NAN,
+    }
+}
