@@ -40,6 +40,9 @@ pub struct Material {
     /// `(G_1, eta)` as given to a standard-solid constructor: exact (`eta` is not recomputed
     /// from `G_1 tau`) and kept when the shear has no term (`G_1 = 0` or `eta = 0`).
     written: Option<(f64, f64)>,
+    /// Mass density (kg/m³), when known: only the quasi-static check of an answer uses it
+    /// ([`crate::model::validity`]).
+    density: Option<f64>,
 }
 
 impl PartialEq for Material {
@@ -51,6 +54,23 @@ impl PartialEq for Material {
 }
 
 impl Material {
+    /// This material with the mass density `rho` (kg/m³, `0 < rho < inf`), which enables the
+    /// quasi-static check of answers on it ([`crate::model::validity`]).
+    pub fn with_density(mut self, rho: f64) -> Result<Self> {
+        self.density = Some(crate::error::check(
+            "density",
+            rho,
+            rho > 0.0,
+            "0 < density < inf (kg/m^3)",
+        )?);
+        Ok(self)
+    }
+
+    /// The mass density (kg/m³), when given.
+    pub fn density(&self) -> Option<f64> {
+        self.density
+    }
+
     /// Standard solid from its shear parameters and the bulk modulus `k_0` (all Pa, `eta` in
     /// Pa s).
     ///
@@ -105,6 +125,7 @@ impl Material {
             shear: ShearProny::standard(g_inf, term),
             bulk,
             written: Some((g_1, eta)),
+            density: None,
         })
     }
 
@@ -128,6 +149,7 @@ impl Material {
             shear,
             bulk,
             written: None,
+            density: None,
         })
     }
 

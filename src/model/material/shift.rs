@@ -207,7 +207,11 @@ impl Material {
                 BulkInput::Prony(BulkProny::new(p.k_inf(), &scale(p.terms()))?)
             }
         };
-        Material::general(shear, bulk)
+        let shifted = Material::general(shear, bulk)?;
+        match self.density() {
+            Some(rho) => shifted.with_density(rho),
+            None => Ok(shifted),
+        }
     }
 }
 
