@@ -6,6 +6,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 use mdr_impact::error::escape_text;
+use mdr_impact::report::figures;
 use mdr_impact::solvers::indentation::Prescribed;
 use mdr_impact::solvers::{force_curve, IndentMethod};
 use mdr_impact::{
@@ -235,7 +236,7 @@ enum Command {
         fresh: bool,
     },
     /// Regenerate the paper's figures (SVG), the data behind them (CSV) and the result tables.
-    Figures(mdr_impact::report::figures::FigureArgs),
+    Figures(FigureArgs),
     /// Identify material parameters from drop tests (CSV v0,cor[,cor_sd,contact_time,
     /// contact_time_sd,setup]); writes DIR/fit.toml and DIR/fit.svg.
     Fit {
@@ -283,6 +284,47 @@ enum Command {
         #[arg(long)]
         report: Option<PathBuf>,
     },
+}
+
+/// Options of the `figures` command.
+#[derive(Debug, Clone, clap::Args)]
+struct FigureArgs {
+    /// Output folder for the SVGs, CSVs and tables.md.
+    #[arg(long, default_value = figures::DEFAULT_OUT)]
+    out: PathBuf,
+    /// Solver name (auto, mdr, ...).
+    #[arg(long, default_value = "auto")]
+    solver: String,
+    /// Requested relative accuracy of each CoR.
+    #[arg(long, default_value_t = mdr_impact::apps::sweep::DEFAULT_SWEEP_RTOL)]
+    rtol: f64,
+    /// Grid values of log10 p2 over [-3, 1] in the maps (>= 3).
+    #[arg(long, default_value_t = figures::DEFAULT_N_P2)]
+    n_p2: usize,
+    /// Grid values of log10 p3 over [-2, 3] in the maps (>= 3).
+    #[arg(long, default_value_t = figures::DEFAULT_N_P3)]
+    n_p3: usize,
+    /// Values of log10 p3 over [-2, 3] on the curves of Figs. 5 and 6 (>= 3).
+    #[arg(long, default_value_t = figures::DEFAULT_N_LINE)]
+    n_line: usize,
+    /// Canonical units instead of random dimensional inputs (the paper drew them at random).
+    #[arg(long)]
+    canonical: bool,
+    /// Seed of the random dimensional inputs.
+    #[arg(long, default_value_t = figures::DEFAULT_SEED)]
+    seed: u64,
+    /// Scaling check on every K-th point (dimensional inputs only; 0: never).
+    #[arg(long, value_name = "K", default_value_t = mdr_impact::apps::sweep::DEFAULT_CHECK_EVERY)]
+    check_every: u64,
+    /// Keep rows already in the data files (continue an interrupted run) instead of recomputing.
+    #[arg(long)]
+    resume: bool,
+    /// Also replace the generated block of this Markdown file (e.g. RESULTS.md) by the tables.
+    #[arg(long)]
+    results: Option<PathBuf>,
+    /// Show progress bars (on a terminal only).
+    #[arg(long)]
+    progress: bool,
 }
 
 fn main() -> ExitCode {
@@ -754,10 +796,13 @@ fn run(cli: Cli) -> Result<(), Error> {
                 },
                 dimensional: dimensional.then_some(seed),
                 check_every,
-                progress: true,
                 resume: !fresh,
             };
-            let summary = sweep::run(&plan.points()?, &out, &opts)?;
+            let points = plan.points()?;
+            let bar = progress_bar(points.len() as u64, &out.display().to_string());
+            let summary = sweep::run(&points, &out, &opts, &|| bar.inc(1));
+            bar.finish_and_clear();
+            let summary = summary?;
             println!("{summary}");
             println!("rows in {}", out.display());
             Ok(())
@@ -845,7 +890,27 @@ fn run(cli: Cli) -> Result<(), Error> {
             Ok(())
         }
         Command::Figures(args) => {
-            let report = mdr_impact::report::figures::run(&args)?;
+            let opts = figures::FigureOptions {
+                out: args.out,
+                solver: args.solver.parse::<SolverKind>()?,
+                rtol: args.rtol,
+                n_p2: args.n_p2,
+                n_p3: args.n_p3,
+                n_line: args.n_line,
+                canonical: args.canonical,
+                seed: args.seed,
+                check_every: args.check_every,
+                resume: args.resume,
+                results: args.results,
+            };
+            let bar = if args.progress {
+                progress_bar(opts.units(), "figures")
+            } else {
+                indicatif::ProgressBar::hidden()
+            };
+            let report = figures::run(&opts, &|| bar.inc(1));
+            bar.finish_and_clear();
+            let report = report?;
             print!("{report}");
             Ok(())
         }

@@ -20,12 +20,11 @@
 
 use std::collections::BTreeMap;
 use std::fs::OpenOptions;
-use std::io::{IsTerminal, Read, Seek, SeekFrom};
+use std::io::{Read, Seek, SeekFrom};
 use std::path::Path;
 use std::sync::Mutex;
 use std::time::Instant;
 
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 
 use crate::error::{Error, Result};
@@ -369,8 +368,6 @@ pub struct SweepOptions {
     /// With dimensional inputs, also solve every `check_every`-th point (`index % k == 0`) in
     /// canonical units and record the deviation; `0`: never.
     pub check_every: u64,
-    /// Show a progress bar on stderr (only when stderr is a terminal).
-    pub progress: bool,
     /// Keep the rows already in the output file and skip their points; `false`: start afresh.
     pub resume: bool,
 }
@@ -384,7 +381,6 @@ impl Default for SweepOptions {
             },
             dimensional: None,
             check_every: DEFAULT_CHECK_EVERY,
-            progress: false,
             resume: true,
         }
     }
@@ -688,7 +684,14 @@ fn matches(path: &Path, r: &Record, p: &Point, opts: &SweepOptions) -> Result<()
 
 /// Run a sweep over `points`, appending rows to `out` (see the module docs for resume).
 /// Returns the summary; the rows are in the file (read them with [`read_records`]).
-pub fn run(points: &[Point], out: &Path, opts: &SweepOptions) -> Result<Summary> {
+/// `tick` is called once per point (for a progress bar of `points.len()` units): at once for the
+/// points resumed from the file, after its solve for every other.
+pub fn run(
+    points: &[Point],
+    out: &Path,
+    opts: &SweepOptions,
+    tick: &(dyn Fn() + Sync),
+) -> Result<Summary> {
     opts.solve.validate()?;
     let t0 = Instant::now();
     let by_index: BTreeMap<u64, &Point> = points.iter().map(|p| (p.index, p)).collect();
@@ -740,17 +743,9 @@ pub fn run(points: &[Point], out: &Path, opts: &SweepOptions) -> Result<Summary>
         .iter()
         .filter(|p| !done.contains_key(&p.index))
         .collect();
-    let bar = if opts.progress && std::io::stderr().is_terminal() {
-        ProgressBar::with_draw_target(Some(pending.len() as u64), ProgressDrawTarget::stderr())
-    } else {
-        ProgressBar::hidden()
-    };
-    if let Ok(style) = ProgressStyle::with_template(
-        "{msg} [{elapsed_precise}] {wide_bar} {pos}/{len} ({per_sec}, eta {eta})",
-    ) {
-        bar.set_style(style);
+    for _ in 0..done.len() {
+        tick();
     }
-    bar.set_message(out.display().to_string());
     let writer = Mutex::new(w);
     let new_rows: Mutex<Vec<Record>> = Mutex::new(Vec::with_capacity(pending.len()));
     pending.par_iter().try_for_each(|p| -> Result<()> {
@@ -766,10 +761,9 @@ pub fn run(points: &[Point], out: &Path, opts: &SweepOptions) -> Result<Summary>
         if let Ok(mut v) = new_rows.lock() {
             v.push(rec);
         }
-        bar.inc(1);
+        tick();
         Ok(())
     })?;
-    bar.finish_and_clear();
     drop(writer);
     let computed = pending.len();
     let resumed = done.len();
