@@ -197,7 +197,7 @@ pub fn solve_one(row: &Row, solver: SolverKind, rtol: f64) -> SolveResult {
             message: e.to_string(),
         },
         Ok(Ok(o)) => {
-            let finite = o.cor.is_finite() && o.cor_error_estimate.map_or(true, f64::is_finite);
+            let finite = o.cor.is_finite() && o.cor_error_estimate.is_none_or(f64::is_finite);
             if finite {
                 SolveResult::Ok {
                     cor: o.cor,
