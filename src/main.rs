@@ -6,7 +6,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 use mdr_impact::error::escape_text;
-use mdr_impact::report::figures;
+use mdr_impact::report::{figures, sections};
 use mdr_impact::solvers::indentation::Prescribed;
 use mdr_impact::solvers::{force_curve, IndentMethod};
 use mdr_impact::{
@@ -570,37 +570,26 @@ fn run(cli: Cli) -> Result<(), Error> {
             check,
         } => {
             let bar = progress_bar(validate::units(), "validate");
-            let figure_dir = if check {
-                std::env::temp_dir().join("mdr-impact-validate-check")
-            } else {
-                figures
-            };
-            let markdown_dir = out.parent().map(PathBuf::from).unwrap_or_default();
-            let opts = validate::ValidateOptions {
-                figure_dir,
-                markdown_dir,
-            };
-            let fresh = validate::run(&opts, &|| bar.inc(1))?;
-            bar.finish_and_clear();
-            // the per-regime accuracy table on stdout
-            if let (Some(b), Some(e)) = (fresh.find("### Per regime"), fresh.find("### Per case")) {
-                println!("{}", fresh[b..e].trim_end());
-            }
-            let existing = std::fs::read_to_string(&out).unwrap_or_default();
             if check {
-                let fresh = fresh.replace(&opts.figure_dir.display().to_string(), "validation");
-                if validate::without_generated(&fresh) != validate::without_generated(&existing) {
+                let c = validate::check(&out, &|| bar.inc(1));
+                bar.finish_and_clear();
+                let c = c?;
+                if let Some(t) = validate::per_regime(&c.fresh) {
+                    println!("{t}");
+                }
+                if let validate::Staleness::Stale { line, .. } = c.staleness {
                     return Err(Error::Unsupported(format!(
-                        "{} is stale: run `mdr-impact validate` and commit the result",
+                        "{} is stale (first difference at line {line}): run `mdr-impact validate` and commit the result",
                         out.display()
                     )));
                 }
                 println!("{} is current", out.display());
             } else {
-                let text = validate::keep_generated(&fresh, &existing);
-                output::write_atomic(&out, |w| {
-                    w.write_all(text.as_bytes()).map_err(|e| Error::io(&out, e))
-                })?;
+                let fresh = validate::regenerate(&out, &figures, &|| bar.inc(1));
+                bar.finish_and_clear();
+                if let Some(t) = validate::per_regime(&fresh?) {
+                    println!("{t}");
+                }
                 println!("wrote {}", out.display());
             }
             Ok(())
@@ -694,8 +683,6 @@ fn run(cli: Cli) -> Result<(), Error> {
                 );
             }
             if !quick {
-                let existing =
-                    std::fs::read_to_string(&report).map_err(|e| Error::io(&report, e))?;
                 let mut section =
                     bench::summary(&points, &bench::machine(), batch, &timed, &general);
                 section.push('\n');
@@ -708,11 +695,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                     "\n`mdr-impact curve --v0 0.01:10:200 --log` on the default scene (200 \
                      velocities, all cores): {curve_secs:.3} s.\n"
                 ));
-                let text = validate::replace_performance(&existing, &section)?;
-                output::write_atomic(&report, |w| {
-                    w.write_all(text.as_bytes())
-                        .map_err(|e| Error::io(&report, e))
-                })?;
+                sections::update_section(&report, &sections::PERFORMANCE, &section)?;
                 println!("performance section of {} updated", report.display());
             }
             Ok(())
@@ -725,8 +708,7 @@ fn run(cli: Cli) -> Result<(), Error> {
         } => {
             use mdr_impact::report::stress;
             // read first: a missing report or markers fail before minutes of work
-            let existing = std::fs::read_to_string(&report).map_err(|e| Error::io(&report, e))?;
-            validate::replace_stress(&existing, "")?;
+            sections::require_section(&report, &sections::STRESS)?;
             let bar = progress_bar(rows as u64, "stress");
             let r = stress::run(rows, seed, &|| bar.inc(1));
             bar.finish_and_clear();
@@ -735,11 +717,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             std::fs::create_dir_all(&out).map_err(|e| Error::io(&out, e))?;
             let csv = out.join("stress_outside.csv");
             r.write_problems_csv(&csv)?;
-            let text = validate::replace_stress(&existing, &section)?;
-            output::write_atomic(&report, |w| {
-                w.write_all(text.as_bytes())
-                    .map_err(|e| Error::io(&report, e))
-            })?;
+            sections::update_section(&report, &sections::STRESS, &section)?;
             println!(
                 "stress section of {} updated; {} solves that broke the contract in {}",
                 report.display(),
@@ -853,14 +831,9 @@ fn run(cli: Cli) -> Result<(), Error> {
             report,
         } => {
             use mdr_impact::apps::fit::study;
-            let existing = match &report {
-                Some(p) => {
-                    let text = std::fs::read_to_string(p).map_err(|e| Error::io(p, e))?;
-                    validate::replace_filled(&text, &validate::FIT_STUDY, "")?;
-                    Some(text)
-                }
-                None => None,
-            };
+            if let Some(p) = &report {
+                sections::require_section(p, &sections::FIT_STUDY)?;
+            }
             let mut reports = Vec::new();
             for contact_times in [true, false] {
                 if cor_only && contact_times {
@@ -880,11 +853,8 @@ fn run(cli: Cli) -> Result<(), Error> {
             }
             let section = study::markdown(&reports);
             print!("{section}");
-            if let (Some(p), Some(text)) = (&report, existing) {
-                let text = validate::replace_filled(&text, &validate::FIT_STUDY, &section)?;
-                output::write_atomic(p, |w| {
-                    w.write_all(text.as_bytes()).map_err(|e| Error::io(p, e))
-                })?;
+            if let Some(p) = &report {
+                sections::update_section(p, &sections::FIT_STUDY, &section)?;
                 println!("fit section of {} updated", p.display());
             }
             Ok(())
