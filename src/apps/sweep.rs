@@ -560,7 +560,10 @@ pub fn solve_point(p: &Point, opts: &SweepOptions) -> Record {
         rec.cor_error_estimate = o.cor_error_estimate;
         rec.contact_time = Some(o.contact_time / sc.time);
         rec.max_indentation = Some(o.max_indentation / sc.length);
-        if opts.dimensional.is_some() && opts.check_every > 0 && p.index.is_multiple_of(opts.check_every) {
+        if opts.dimensional.is_some()
+            && opts.check_every > 0
+            && p.index.is_multiple_of(opts.check_every)
+        {
             let c = solve(&Impact::from_groups(g)?, &opts.solve)?;
             rec.cor_canonical = Some(c.cor);
             rec.scaling_dev = Some((o.cor - c.cor).abs() / c.cor.abs().max(f64::MIN_POSITIVE));
