@@ -8,4 +8,5 @@ pub mod batch;
 pub mod curve;
 pub mod dem;
 pub mod fit;
+pub mod indent;
 pub mod sweep;

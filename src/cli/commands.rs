@@ -1,0 +1,374 @@
+//! One function per subcommand: it calls one library entry point and prints.
+
+use std::io::Write;
+use std::path::Path;
+
+use mdr_impact::apps::{batch, curve, dem, fit, indent, sweep};
+use mdr_impact::error::escape_text;
+use mdr_impact::io::{output, plot, scene::Scene};
+use mdr_impact::report::{bench, figures, sections, stress, validate};
+use mdr_impact::{solve, Error, Groups, Impact, Material, SolveOptions, SolverKind};
+
+use super::args::{Command, FigureArgs, GroupArgs};
+use super::{progress_bar, with_progress, Failure, Outcome};
+
+/// Run one parsed command (none: `run` on the default scene).
+pub fn run(command: Option<Command>) -> Outcome {
+    use Command as C;
+    match command.unwrap_or(C::Run {
+        scene: None,
+        json: false,
+    }) {
+        C::Run { scene, json } => cmd_run(scene.as_deref(), json),
+        C::Curve {
+            scene,
+            v0,
+            log,
+            out,
+        } => cmd_curve(scene.as_deref(), &v0, log, &out),
+        #[rustfmt::skip]
+        C::Dem { scene, v0, format, log, modulus, out } => {
+            cmd_dem(scene.as_deref(), &v0, format.into(), log, modulus.into(), &out)
+        },
+        #[rustfmt::skip]
+        C::Cor { groups, input, solver, rtol } => cmd_cor(&groups, input.as_deref(), solver, rtol),
+        #[rustfmt::skip]
+        C::Indent { history, rate, peak_time, radius, g_inf, g1, eta, nu, solver, times } => {
+            let material = Material::with_poisson(g_inf, g1, eta, nu)?;
+            let rows = indent::run(&material, radius, history, rate, peak_time, times.as_deref(), solver.into())?;
+            stdout(&indent::csv(&rows))
+        }
+        C::Validate {
+            out,
+            figures,
+            check,
+        } => cmd_validate(&out, &figures, check),
+        #[rustfmt::skip]
+        C::Bench { quick, out, report, budget, batch_rows } => {
+            cmd_bench(&bench::BenchOptions { quick, budget, batch_rows }, &out, &report)
+        },
+        C::Stress {
+            rows,
+            seed,
+            out,
+            report,
+        } => cmd_stress(rows, seed, &out, &report),
+        C::Reference { out } => {
+            let written = mdr_impact::solvers::theory::generate_reference(&out)?;
+            let (n, manifest) = (written.files.len(), written.manifest.display());
+            println!("wrote {n} files and {manifest}");
+            Ok(())
+        }
+        #[rustfmt::skip]
+        C::Sweep { nu, log_p2, log_p3, random, seed, solver, rtol, out, dimensional, check_every, fresh } => {
+            let plan = sweep::Plan {
+                nu: sweep::parse_nu_list(&nu)?,
+                log_p2: sweep::LogRange::parse("log-p2", &log_p2)?,
+                log_p3: sweep::LogRange::parse("log-p3", &log_p3)?,
+                sampling: match random {
+                    Some(n) => sweep::Sampling::Random { n, seed },
+                    None => sweep::Sampling::Grid,
+                },
+            };
+            let opts = sweep::SweepOptions {
+                solve: SolveOptions { solver, rtol, ..Default::default() },
+                dimensional: dimensional.then_some(seed),
+                check_every,
+                resume: !fresh,
+            };
+            cmd_sweep(&plan, &out, &opts)
+        }
+        #[rustfmt::skip]
+        C::Fit { data, scene, model, fix, tau_range, out, json } => {
+            cmd_fit(&data, scene.as_deref(), model, &fix, tau_range.as_deref(), &out, json)
+        },
+        #[rustfmt::skip]
+        C::FitStudy { reps, seed, velocities, noise, cor_only, report } => {
+            let config = |contact_times| fit::study::StudyConfig { reps, seed, noise, velocities, contact_times };
+            cmd_fit_study(config, cor_only, report.as_deref())
+        }
+        C::Figures(args) => cmd_figures(args),
+    }
+}
+
+/// Write `text` to stdout in one piece.
+fn stdout(text: &str) -> Outcome {
+    std::io::stdout()
+        .write_all(text.as_bytes())
+        .map_err(|e| Error::io("<stdout>", e).into())
+}
+
+/// The scene at `path`, or the embedded default.
+fn scene_or_default(path: Option<&Path>) -> Result<Scene, Error> {
+    path.map_or_else(|| Ok(Scene::default_scene()), Scene::load)
+}
+
+fn cmd_run(scene: Option<&Path>, json: bool) -> Outcome {
+    let scene = scene_or_default(scene)?;
+    let outcome = solve(&scene.impact, &scene.options)?;
+    // with --json, stdout holds the JSON object alone; notes go to stderr
+    let note = |k: &str, v: &Path| match json {
+        true => eprintln!("{k:<28}{}", v.display()),
+        false => println!("{k:<28}{}", v.display()),
+    };
+    if let Some(h) = &outcome.history {
+        if let Some(p) = &scene.history_csv {
+            output::write_history_csv(p, h)?;
+        }
+        if let Some(p) = &scene.plot {
+            plot::force_history_svg(p, h, "Contact force")?;
+        }
+    }
+    if json {
+        println!("{}", output::impact_json(&scene.impact, &outcome));
+    } else {
+        print!("{}", output::summary(&scene.impact, &outcome));
+    }
+    if outcome.history.is_some() {
+        if let Some(p) = &scene.history_csv {
+            note("history written to", p);
+        }
+        if let Some(p) = &scene.plot {
+            note("force plot written to", p);
+        }
+    }
+    Ok(())
+}
+
+fn cmd_curve(scene: Option<&Path>, v0: &str, log: bool, out: &Path) -> Outcome {
+    // the input is checked before the scene is read or anything solved
+    let range = curve::VelocityRange::parse(v0, log)?;
+    let scene = scene_or_default(scene)?;
+    let c = with_progress(range.n as u64, "curve", |tick| {
+        curve::run(&scene.impact, &scene.options, &range, tick)
+    })?;
+    let written = curve::write_outputs(out, &c, log)?;
+    print!("{}", curve::summary(&c, Some(&written)));
+    Ok(())
+}
+
+fn cmd_dem(
+    scene: Option<&Path>,
+    v0: &str,
+    format: dem::Format,
+    log: bool,
+    modulus: dem::ModulusChoice,
+    out: &Path,
+) -> Outcome {
+    // the input is checked before the scene is read or anything solved
+    let range = curve::VelocityRange::parse_optional_n(v0, log, dem::DEFAULT_VELOCITIES)?;
+    let scene = scene_or_default(scene)?;
+    let report = with_progress(range.n as u64, "dem", |tick| {
+        dem::run(&scene.impact, &scene.options, &range, modulus, tick)
+    })?;
+    let written = dem::write_outputs(out, &report, format)?;
+    print!("{}", report.text(format));
+    if format == dem::Format::Json {
+        println!();
+    }
+    for w in &report.warnings {
+        eprintln!("warning: {w}");
+    }
+    for f in &written.files {
+        eprintln!("{:<28}{}", "written", f.display());
+    }
+    Ok(())
+}
+
+fn cmd_cor(groups: &GroupArgs, input: Option<&Path>, solver: SolverKind, rtol: f64) -> Outcome {
+    let opts = SolveOptions {
+        solver,
+        rtol,
+        ..Default::default()
+    };
+    opts.validate()?;
+    if let Some(path) = input {
+        let input = batch::read_rows(path)?;
+        let file = path.display().to_string();
+        let outcomes = batch::solve_rows(&file, &input.rows, &opts)?;
+        let mut buf = Vec::new();
+        batch::write_results(&mut buf, &input.rows, &outcomes)?;
+        std::io::stdout()
+            .write_all(&buf)
+            .map_err(|e| Error::io("<stdout>", e))?;
+        // after success only, so that an error stays the one line on stderr
+        let skipped = &input.skipped_blank_lines;
+        if !skipped.is_empty() {
+            let s = if skipped.len() == 1 { "" } else { "s" };
+            let lines = batch::format_line_list(skipped);
+            eprintln!(
+                "note: {}: skipped blank line{s} {lines}",
+                escape_text(&file)
+            );
+        }
+        return Ok(());
+    }
+    // clap guarantees all three are present without --input
+    let g = |x: Option<f64>| x.unwrap_or(f64::NAN);
+    let impact = Impact::from_groups(Groups::new(g(groups.nu), g(groups.p2), g(groups.p3))?)?;
+    let o = solve(&impact, &opts)?;
+    if let Some(why) = &o.fallback {
+        // `why` is the refusal of fast, which names it ("fast: requested rtol ...")
+        let fast = SolverKind::Fast.name();
+        let why = if why.starts_with(&format!("{fast}:")) {
+            why.clone()
+        } else {
+            format!("{fast}: {why}")
+        };
+        eprintln!("note: answered by {} ({})", o.solver, escape_text(&why));
+    }
+    println!("{}", o.cor);
+    Ok(())
+}
+
+fn cmd_validate(out: &Path, figures: &Path, check: bool) -> Outcome {
+    let units = validate::units();
+    if check {
+        let c = with_progress(units, "validate", |tick| validate::check(out, tick))?;
+        if let Some(t) = validate::per_regime(&c.fresh) {
+            println!("{t}");
+        }
+        if let validate::Staleness::Stale { line, .. } = c.staleness {
+            let report = out.to_path_buf();
+            return Err(Failure::Stale { report, line });
+        }
+        println!("{} is current", out.display());
+    } else {
+        let fresh = with_progress(units, "validate", |tick| {
+            validate::regenerate(out, figures, tick)
+        })?;
+        if let Some(t) = validate::per_regime(&fresh) {
+            println!("{t}");
+        }
+        println!("wrote {}", out.display());
+    }
+    Ok(())
+}
+
+fn cmd_bench(opts: &bench::BenchOptions, out: &Path, report: &Path) -> Outcome {
+    if !opts.quick {
+        // a missing report or markers fail before minutes of work
+        sections::require_section(report, &sections::PERFORMANCE)?;
+    }
+    let units = bench::full_units(opts)?;
+    let r = with_progress(units, "bench", |tick| bench::run_full(opts, tick))?;
+    r.write_files(out)?;
+    print!("{}", r.text());
+    if !opts.quick {
+        sections::update_section(report, &sections::PERFORMANCE, &r.section())?;
+        println!("performance section of {} updated", report.display());
+    }
+    Ok(())
+}
+
+fn cmd_stress(rows: usize, seed: u64, out: &Path, report: &Path) -> Outcome {
+    // a missing report or markers fail before minutes of work
+    sections::require_section(report, &sections::STRESS)?;
+    let r = with_progress(rows as u64, "stress", |tick| stress::run(rows, seed, tick));
+    let section = r.markdown();
+    print!("{section}");
+    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+    let csv = out.join("stress_outside.csv");
+    r.write_problems_csv(&csv)?;
+    sections::update_section(report, &sections::STRESS, &section)?;
+    let (n, path) = (r.problems.len(), csv.display());
+    println!(
+        "stress section of {} updated; {n} solves that broke the contract in {path}",
+        report.display()
+    );
+    match r.clean() {
+        true => Ok(()),
+        false => Err(Failure::ContractBroken { problems: n, csv }),
+    }
+}
+
+fn cmd_sweep(plan: &sweep::Plan, out: &Path, opts: &sweep::SweepOptions) -> Outcome {
+    let points = plan.points()?;
+    let summary = with_progress(points.len() as u64, &out.display().to_string(), |tick| {
+        sweep::run(&points, out, opts, tick)
+    })?;
+    println!("{summary}");
+    println!("rows in {}", out.display());
+    Ok(())
+}
+
+fn cmd_fit(
+    data: &Path,
+    scene: Option<&Path>,
+    kind: fit::ModelKind,
+    fix: &[String],
+    tau_range: Option<&str>,
+    out: &Path,
+    json: bool,
+) -> Outcome {
+    let fixes = fix
+        .iter()
+        .map(|f| f.parse::<fit::Fix>())
+        .collect::<Result<Vec<_>, _>>()?;
+    let name = scene.map_or("default scene".to_string(), |p| p.display().to_string());
+    let scene = scene_or_default(scene)?;
+    let sphere = fit::data::scene_sphere(&scene, &name)?;
+    let data = fit::data::read(data, sphere, &name)?;
+    let taus = fit::prony_times(&kind, tau_range, &data)?;
+    let (model, fixed) = fit::setup_model(kind, &fixes, taus)?;
+    let result = fit::fit(&model, &data, &fixed)?;
+    let written = fit::report::write_outputs(out, &result)?;
+    if json {
+        println!("{}", fit::report::json(&result));
+        eprintln!("material written to {}", written.toml.display());
+        eprintln!("plot written to {}", written.svg.display());
+    } else {
+        print!("{}", fit::report::summary(&result, Some(&written)));
+    }
+    Ok(())
+}
+
+fn cmd_fit_study(
+    config: impl Fn(bool) -> fit::study::StudyConfig,
+    cor_only: bool,
+    report: Option<&Path>,
+) -> Outcome {
+    if let Some(p) = report {
+        sections::require_section(p, &sections::FIT_STUDY)?;
+    }
+    let mut reports = Vec::new();
+    let studies: &[bool] = if cor_only { &[false] } else { &[true, false] };
+    for &contact_times in studies {
+        let cfg = config(contact_times);
+        let r = with_progress(cfg.reps as u64, "fit-study", |tick| {
+            fit::study::run(&cfg, tick)
+        });
+        reports.push(r?);
+    }
+    let section = fit::study::markdown(&reports);
+    print!("{section}");
+    if let Some(p) = report {
+        sections::update_section(p, &sections::FIT_STUDY, &section)?;
+        println!("fit section of {} updated", p.display());
+    }
+    Ok(())
+}
+
+fn cmd_figures(args: FigureArgs) -> Outcome {
+    let opts = figures::FigureOptions {
+        out: args.out,
+        solver: args.solver,
+        rtol: args.rtol,
+        n_p2: args.n_p2,
+        n_p3: args.n_p3,
+        n_line: args.n_line,
+        canonical: args.canonical,
+        seed: args.seed,
+        check_every: args.check_every,
+        resume: args.resume,
+        results: args.results,
+    };
+    let bar = match args.progress {
+        true => progress_bar(opts.units(), "figures"),
+        false => indicatif::ProgressBar::hidden(),
+    };
+    let report = figures::run(&opts, &|| bar.inc(1));
+    bar.finish_and_clear();
+    print!("{}", report?);
+    Ok(())
+}

@@ -1,0 +1,100 @@
+//! Closed sets of flag values, parsed by clap so that a typo exits with code 2 and lists the
+//! accepted values. The library keeps its own enums and `FromStr`; these map onto them.
+
+use clap::builder::{PossibleValuesParser, TypedValueParser};
+use clap::ValueEnum;
+use mdr_impact::apps::{dem, fit};
+use mdr_impact::solvers::IndentMethod;
+use mdr_impact::SolverKind;
+
+/// `--solver` of the impact commands: the names of [`SolverKind::NAMES`].
+pub fn solver() -> impl TypedValueParser<Value = SolverKind> {
+    PossibleValuesParser::new(SolverKind::NAMES).try_map(|s| s.parse::<SolverKind>())
+}
+
+/// `--model` of `fit`: `standard-solid` or `prony:N` (not a closed set: N is a number).
+pub fn model(s: &str) -> Result<fit::ModelKind, String> {
+    s.parse::<fit::ModelKind>().map_err(|e| e.to_string())
+}
+
+/// `dem --format`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    /// LAMMPS input lines.
+    Lammps,
+    /// LIGGGHTS input lines.
+    Liggghts,
+    /// One JSON object on stdout.
+    Json,
+}
+
+impl From<Format> for dem::Format {
+    fn from(f: Format) -> Self {
+        match f {
+            Format::Lammps => dem::Format::Lammps,
+            Format::Liggghts => dem::Format::Liggghts,
+            Format::Json => dem::Format::Json,
+        }
+    }
+}
+
+/// `dem --modulus`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Modulus {
+    /// E* = 4 G_eq(inf).
+    Relaxed,
+    /// E* = 4 G_eq(0).
+    Glassy,
+}
+
+impl From<Modulus> for dem::ModulusChoice {
+    fn from(m: Modulus) -> Self {
+        match m {
+            Modulus::Relaxed => dem::ModulusChoice::Relaxed,
+            Modulus::Glassy => dem::ModulusChoice::Glassy,
+        }
+    }
+}
+
+/// `indent --solver`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Indent {
+    /// Lee-Radok/Ting by quadrature.
+    Theory,
+    /// The MDR foundation driven by the indentation.
+    Mdr,
+}
+
+impl From<Indent> for IndentMethod {
+    fn from(m: Indent) -> Self {
+        match m {
+            Indent::Theory => IndentMethod::Theory,
+            Indent::Mdr => IndentMethod::Mdr,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every mirror value has the library's name for the library's value.
+    #[test]
+    fn mirrors_use_the_library_names() {
+        let name = |v: &dyn Fn() -> Option<clap::builder::PossibleValue>| {
+            v().map(|p| p.get_name().to_string()).unwrap()
+        };
+        for f in Format::value_variants() {
+            let n = name(&|| f.to_possible_value());
+            assert_eq!(n.parse::<dem::Format>().unwrap(), dem::Format::from(*f));
+        }
+        for m in Modulus::value_variants() {
+            let n = name(&|| m.to_possible_value());
+            assert_eq!(n.parse::<dem::ModulusChoice>().unwrap(), (*m).into());
+        }
+        for m in Indent::value_variants() {
+            let n = name(&|| m.to_possible_value());
+            assert_eq!(n.parse::<IndentMethod>().unwrap(), (*m).into());
+        }
+    }
+}
