@@ -112,11 +112,13 @@ impl LogRange {
     /// in errors. Requires finite `MIN <= MAX`, `1 <= N <= 100000`, and `N = 1` only if
     /// `MIN = MAX`.
     pub fn parse(field: &'static str, s: &str) -> Result<Self> {
-        let bad = |what: &str| {
-            Error::Unsupported(format!(
-                "{field} = '{s}': {what}; expected MIN:MAX:N (log10 values, MIN <= MAX, N >= 1), \
-                 MIN:MAX or a single value"
-            ))
+        let bad = |what: &str| Error::Parse {
+            what: field,
+            input: crate::error::escape_text(s),
+            expected: format!(
+                "MIN:MAX:N (log10 values, MIN <= MAX, N >= 1), MIN:MAX or a single value; {}",
+                crate::error::escape_text(what)
+            ),
         };
         let parts: Vec<&str> = s.split(':').map(str::trim).collect();
         let num = |t: &str| -> Result<f64> {
@@ -171,9 +173,10 @@ impl LogRange {
 
     /// The grid's `log10` values (exact at both ends); an error when `n` is missing.
     pub fn values(&self, field: &'static str) -> Result<Vec<f64>> {
-        let n = self
-            .n
-            .ok_or_else(|| Error::Unsupported(format!("{field} needs MIN:MAX:N for a grid")))?;
+        let n = self.n.ok_or_else(|| Error::NotSupported {
+            solver: field,
+            what: "a grid needs MIN:MAX:N (MIN:MAX is enough for --random only)".into(),
+        })?;
         if n == 1 {
             return Ok(vec![self.min]);
         }
@@ -197,11 +200,10 @@ pub fn parse_nu_list(s: &str) -> Result<Vec<f64>> {
     for t in s.split(',').map(str::trim) {
         let v = match t {
             "inc" | "incompressible" => 0.5,
-            _ => t.parse::<f64>().map_err(|_| {
-                Error::Unsupported(format!(
-                    "nu = '{t}' is not a number (expected a comma-separated list of numbers in \
-                     (-1, 0.5] or 'inc')"
-                ))
+            _ => t.parse::<f64>().map_err(|_| Error::Parse {
+                what: "nu",
+                input: crate::error::escape_text(t),
+                expected: "a comma-separated list of numbers in (-1, 0.5] or 'inc'".into(),
             })?,
         };
         if !(v > -1.0 && v <= 0.5) {
@@ -212,7 +214,11 @@ pub fn parse_nu_list(s: &str) -> Result<Vec<f64>> {
             });
         }
         if out.contains(&v) {
-            return Err(Error::Unsupported(format!("nu = {v} is listed twice")));
+            return Err(Error::Parse {
+                what: "nu",
+                input: crate::error::escape_text(s),
+                expected: format!("each value once ({v} is listed twice)"),
+            });
         }
         out.push(v);
     }
@@ -277,7 +283,11 @@ impl Plan {
     /// The numbered points of the plan (deterministic for a given plan and seed).
     pub fn points(&self) -> Result<Vec<Point>> {
         if self.nu.is_empty() {
-            return Err(Error::Unsupported("nu: the list is empty".into()));
+            return Err(Error::Parse {
+                what: "nu",
+                input: String::new(),
+                expected: "at least one value".into(),
+            });
         }
         let mut pts = Vec::new();
         match self.sampling {
@@ -663,7 +673,9 @@ fn matches(path: &Path, r: &Record, p: &Point, opts: &SweepOptions) -> Result<()
     if same {
         Ok(())
     } else {
-        Err(Error::Unsupported(format!(
+        Err(Error::NotSupported {
+            solver: "sweep",
+            what: format!(
             "{}: row {} (nu = {}, log10 p2 = {}, log10 p3 = {}, solver {}, rtol {}, dimensional {}) \
              was made by a different sweep than the one asked for (nu = {}, log10 p2 = {}, \
              log10 p3 = {}, solver {}, rtol {}, dimensional {}); use another --out or start afresh",
@@ -681,7 +693,8 @@ fn matches(path: &Path, r: &Record, p: &Point, opts: &SweepOptions) -> Result<()
             opts.solve.solver.name(),
             opts.solve.rtol,
             opts.dimensional.is_some()
-        )))
+        ),
+        })
     }
 }
 
@@ -699,7 +712,7 @@ pub fn run(
     let t0 = Instant::now();
     let by_index: BTreeMap<u64, &Point> = points.iter().map(|p| (p.index, p)).collect();
     if by_index.len() != points.len() {
-        return Err(Error::Unsupported("sweep: duplicate point indices".into()));
+        return Err(Error::Internal("sweep: duplicate point indices"));
     }
     if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
@@ -718,15 +731,18 @@ pub fn run(
             .map_err(|e| Error::io(out, e))?;
         let keep = complete_len(&bytes);
         for r in parse_records(out, &bytes[..keep])? {
-            let p = by_index.get(&r.point.index).ok_or_else(|| {
-                Error::Unsupported(format!(
+            let p = by_index
+                .get(&r.point.index)
+                .ok_or_else(|| Error::NotSupported {
+                    solver: "sweep",
+                    what: format!(
                     "{}: row index {} is not in the planned sweep of {} points; use another --out \
                      or start afresh",
                     out.display(),
                     r.point.index,
                     points.len()
-                ))
-            })?;
+                ),
+                })?;
             matches(out, &r, p, opts)?;
             done.insert(r.point.index, r);
         }
@@ -756,7 +772,7 @@ pub fn run(
         {
             let mut w = writer
                 .lock()
-                .map_err(|_| Error::Unsupported("sweep: writer lock poisoned".into()))?;
+                .map_err(|_| Error::Internal("sweep: writer lock poisoned"))?;
             w.write_record(rec.fields())
                 .map_err(|e| Error::io(out, e))?;
             w.flush().map_err(|e| Error::io(out, e))?;

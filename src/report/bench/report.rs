@@ -141,7 +141,7 @@ pub fn full_units(opts: &BenchOptions) -> Result<u64> {
 }
 
 /// Run the whole benchmark ([`BenchOptions`]); `tick` as [`full_units`] counts. A budget that
-/// is not positive and finite is refused ([`Error::OutOfRange`](crate::Error::OutOfRange)).
+/// is not positive and finite is refused ([`Error::OutOfRange`]).
 pub fn run_full(opts: &BenchOptions, tick: &dyn Fn()) -> Result<BenchReport> {
     use crate::apps::{batch, curve};
     use std::time::Instant;

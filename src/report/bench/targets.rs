@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 
 use super::*;
 
-/// Design targets of `fast` (checked by [`targets`]): median CoR-only time per impact in every
+/// Design targets of `fast` (checked by [`targets()`]): median CoR-only time per impact in every
 /// group of [`timing_groups`] at rtol 1e-6 and 1e-10 (s).
 pub const TARGET_MEDIAN_SECONDS: [f64; 2] = [20e-6, 200e-6];
 /// Design target: `mdr-euler` time over `fast` time at equal CoR error (at most 1e-4).

@@ -179,12 +179,11 @@ fn run_sweep(
     let mut recs = sweep::read_records(path)?;
     recs.sort_by_key(|r| r.point.index);
     if recs.len() != points.len() {
-        return Err(Error::Unsupported(format!(
-            "{}: {} rows for {} planned points",
-            path.display(),
-            recs.len(),
-            points.len()
-        )));
+        return Err(Error::NotSupported {
+            solver: "figures",
+            what: format!("{} rows for {} planned points", recs.len(), points.len()),
+        }
+        .at(path.display().to_string()));
     }
     Ok(recs)
 }
@@ -277,7 +276,7 @@ pub fn run(args: &FigureOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
 
     let mut files = Vec::new();
     let map_of = |nu: f64| maps.iter().find(|m| m.nu == nu);
-    let inc = map_of(0.5).ok_or_else(|| Error::Unsupported("no incompressible map".into()))?;
+    let inc = map_of(0.5).ok_or(Error::Internal("figures: no incompressible map"))?;
     let xl = "log10 p3".to_string();
     let yl = "log10 p2 = log10 (G_inf / G_1)".to_string();
     // Figs. 3 and 4
@@ -285,7 +284,7 @@ pub fn run(args: &FigureOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
         (0.45, "fig3_cor_nu0.45", "Fig. 3"),
         (0.5, "fig4_cor_incompressible", "Fig. 4"),
     ] {
-        let m = map_of(nu).ok_or_else(|| Error::Unsupported(format!("no map for nu = {nu}")))?;
+        let m = map_of(nu).ok_or(Error::Internal("figures: no map of a figure's nu"))?;
         let title = if nu == 0.5 {
             format!("{fig}: CoR e, incompressible")
         } else {
@@ -335,7 +334,7 @@ pub fn run(args: &FigureOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
     }
     // relative error maps
     for nu in [0.45, 0.49] {
-        let m = map_of(nu).ok_or_else(|| Error::Unsupported(format!("no map for nu = {nu}")))?;
+        let m = map_of(nu).ok_or(Error::Internal("figures: no map of a figure's nu"))?;
         let rel = stats::relative_error(&m.field, &inc.field)?;
         let name = format!("relerr_nu{nu}");
         let svg = out.join(format!("{name}.svg"));
@@ -551,16 +550,18 @@ fn write_curves_csv(path: &Path, x: &[f64], curves: &[Curve]) -> Result<()> {
 pub fn splice_results(path: &Path, block: &str) -> Result<()> {
     let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
     let (Some(b), Some(e)) = (text.find(BEGIN_MARK), text.find(END_MARK)) else {
-        return Err(Error::Unsupported(format!(
-            "{}: markers '{BEGIN_MARK}' and '{END_MARK}' not found",
-            path.display()
-        )));
+        return Err(Error::NotSupported {
+            solver: "figures",
+            what: format!("markers '{BEGIN_MARK}' and '{END_MARK}' not found"),
+        }
+        .at(path.display().to_string()));
     };
     if e < b {
-        return Err(Error::Unsupported(format!(
-            "{}: end marker before begin marker",
-            path.display()
-        )));
+        return Err(Error::NotSupported {
+            solver: "figures",
+            what: "end marker before begin marker".into(),
+        }
+        .at(path.display().to_string()));
     }
     let new = format!(
         "{}{BEGIN_MARK}\n\n{}\n{}",

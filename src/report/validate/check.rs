@@ -61,7 +61,7 @@ pub fn per_regime(markdown: &str) -> Option<&str> {
     (b < e).then(|| markdown[b..e].trim_end())
 }
 
-/// What [`check`] found: the fresh rendering (figure links as committed) and how the report
+/// What [`check()`] found: the fresh rendering (figure links as committed) and how the report
 /// compares with it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Checked {

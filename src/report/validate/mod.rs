@@ -309,7 +309,7 @@ pub fn run(opts: &ValidateOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
     w(&mut md, "\n## 3. Convergence orders of the MDR schemes\n\n");
     w(&mut md, CONVERGENCE_TEXT);
     let case = crate::report::catalogue::impact_case("dissipative-nu045")
-        .ok_or(Error::Unsupported("catalogue".into()))?;
+        .ok_or(Error::Internal("catalogue: no case dissipative-nu045"))?;
     let tri = Prescribed::triangle(0.3, 1.0)?;
     let studies: Vec<(&str, f64, Refinement)> = vec![
         (
