@@ -236,3 +236,90 @@ fn external_csv_has_work_columns() {
     assert_eq!(col("evaluations_rtol_1e-10"), "310");
     assert_eq!(col("cor_reference").parse::<f64>().unwrap(), 0.5);
 }
+
+fn report(quick: bool) -> BenchReport {
+    let point = |solver, rtol, seconds, cor_error| BenchPoint {
+        solver,
+        rtol,
+        case: "dissipative-nu045",
+        regime: "dissipative",
+        median_seconds: seconds,
+        repeats: 3,
+        cor_error,
+        force_error: 1e-5,
+    };
+    BenchReport {
+        options: BenchOptions {
+            quick,
+            budget: 0.1,
+            batch_rows: 0,
+        },
+        points: vec![
+            point(SolverKind::MdrEuler, 1e-4, 2e-2, 5e-5),
+            point(SolverKind::Fast, 1e-4, 2e-5, 1e-6),
+        ],
+        timed: if quick {
+            vec![]
+        } else {
+            vec![(TimedRows::Random, vec![timing(0.5, [10, 20], [60, 120])])]
+        },
+        general: vec![],
+        euler_general: None,
+        fit: FitTiming {
+            seconds: 1.5,
+            solves: 100,
+            drops: 10,
+        },
+        batch: Some((1000, 0.25)),
+        curve_seconds: 0.0125,
+        machine: "a test machine".into(),
+    }
+}
+
+#[test]
+fn full_report_text_section_and_files() {
+    let r = report(false);
+    let text = r.text();
+    let first = text.lines().next().unwrap();
+    assert!(first.starts_with("mdr-euler  rtol=1e-4"), "{first}");
+    assert!(
+        text.contains("cor --input path: 1000 rows in 0.25 s\n"),
+        "{text}"
+    );
+    assert!(text.contains("curve --v0 0.01:10:200 --log (default scene): 0.013 s\n"));
+    assert!(text.contains("Design targets of `fast`"), "{text}");
+    let section = r.section();
+    assert!(section.starts_with("Measured by `mdr-impact bench` in one run on a test machine"));
+    assert!(section.contains("`mdr-impact fit` of 10 drops"));
+    assert!(section.ends_with(
+        "\n`mdr-impact curve --v0 0.01:10:200 --log` on the default scene (200 velocities, all \
+         cores): 0.013 s.\n"
+    ));
+    let dir = tempfile::tempdir().unwrap();
+    r.write_files(dir.path()).unwrap();
+    for f in ["bench.csv", "work-precision.svg", "bench_random.csv"] {
+        assert!(dir.path().join(f).exists(), "{f}");
+    }
+    // quick: no row timings, no targets
+    let q = report(true);
+    assert!(!q.text().contains("Design targets"));
+    assert_eq!(full_units(&q.options).unwrap(), units(true));
+}
+
+#[test]
+fn run_full_refuses_a_budget_that_is_not_positive() {
+    for budget in [0.0, -1.0, f64::NAN] {
+        let opts = BenchOptions {
+            quick: true,
+            budget,
+            batch_rows: 0,
+        };
+        assert!(matches!(
+            run_full(&opts, &|| {}),
+            Err(Error::OutOfRange {
+                field: "--budget",
+                ..
+            })
+        ));
+    }
+}
