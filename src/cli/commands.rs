@@ -9,85 +9,29 @@ use mdr_impact::io::{output, plot, scene::Scene};
 use mdr_impact::report::{bench, figures, sections, stress, validate};
 use mdr_impact::{solve, Error, Groups, Impact, Material, SolveOptions, SolverKind};
 
-use super::args::{Command, FigureArgs, GroupArgs};
+use super::args::*;
 use super::{progress_bar, with_progress, Failure, Outcome};
 
 /// Run one parsed command (none: `run` on the default scene).
 pub fn run(command: Option<Command>) -> Outcome {
-    use Command as C;
-    match command.unwrap_or(C::Run {
+    let default = RunArgs {
         scene: None,
         json: false,
-    }) {
-        C::Run { scene, json } => cmd_run(scene.as_deref(), json),
-        C::Curve {
-            scene,
-            v0,
-            log,
-            out,
-        } => cmd_curve(scene.as_deref(), &v0, log, &out),
-        #[rustfmt::skip]
-        C::Dem { scene, v0, format, log, modulus, out } => {
-            cmd_dem(scene.as_deref(), &v0, format.into(), log, modulus.into(), &out)
-        },
-        #[rustfmt::skip]
-        C::Cor { groups, input, solver, rtol } => cmd_cor(&groups, input.as_deref(), solver, rtol),
-        #[rustfmt::skip]
-        C::Indent { history, rate, peak_time, radius, g_inf, g1, eta, nu, solver, times } => {
-            let material = Material::with_poisson(g_inf, g1, eta, nu)?;
-            let rows = indent::run(&material, radius, history, rate, peak_time, times.as_deref(), solver.into())?;
-            stdout(&indent::csv(&rows))
-        }
-        C::Validate {
-            out,
-            figures,
-            check,
-        } => cmd_validate(&out, &figures, check),
-        #[rustfmt::skip]
-        C::Bench { quick, out, report, budget, batch_rows } => {
-            cmd_bench(&bench::BenchOptions { quick, budget, batch_rows }, &out, &report)
-        },
-        C::Stress {
-            rows,
-            seed,
-            out,
-            report,
-        } => cmd_stress(rows, seed, &out, &report),
-        C::Reference { out } => {
-            let written = mdr_impact::solvers::theory::generate_reference(&out)?;
-            let (n, manifest) = (written.files.len(), written.manifest.display());
-            println!("wrote {n} files and {manifest}");
-            Ok(())
-        }
-        #[rustfmt::skip]
-        C::Sweep { nu, log_p2, log_p3, random, seed, solver, rtol, out, dimensional, check_every, fresh } => {
-            let plan = sweep::Plan {
-                nu: sweep::parse_nu_list(&nu)?,
-                log_p2: sweep::LogRange::parse("log-p2", &log_p2)?,
-                log_p3: sweep::LogRange::parse("log-p3", &log_p3)?,
-                sampling: match random {
-                    Some(n) => sweep::Sampling::Random { n, seed },
-                    None => sweep::Sampling::Grid,
-                },
-            };
-            let opts = sweep::SweepOptions {
-                solve: SolveOptions { solver, rtol, ..Default::default() },
-                dimensional: dimensional.then_some(seed),
-                check_every,
-                resume: !fresh,
-            };
-            cmd_sweep(&plan, &out, &opts)
-        }
-        #[rustfmt::skip]
-        C::Fit { data, scene, model, fix, tau_range, out, json } => {
-            cmd_fit(&data, scene.as_deref(), model, &fix, tau_range.as_deref(), &out, json)
-        },
-        #[rustfmt::skip]
-        C::FitStudy { reps, seed, velocities, noise, cor_only, report } => {
-            let config = |contact_times| fit::study::StudyConfig { reps, seed, noise, velocities, contact_times };
-            cmd_fit_study(config, cor_only, report.as_deref())
-        }
-        C::Figures(args) => cmd_figures(args),
+    };
+    match command.unwrap_or(Command::Run(default)) {
+        Command::Run(a) => cmd_run(a),
+        Command::Curve(a) => cmd_curve(a),
+        Command::Dem(a) => cmd_dem(a),
+        Command::Cor(a) => cmd_cor(a),
+        Command::Indent(a) => cmd_indent(a),
+        Command::Validate(a) => cmd_validate(a),
+        Command::Bench(a) => cmd_bench(a),
+        Command::Stress(a) => cmd_stress(a),
+        Command::Reference(a) => cmd_reference(a),
+        Command::Sweep(a) => cmd_sweep(a),
+        Command::Fit(a) => cmd_fit(a),
+        Command::FitStudy(a) => cmd_fit_study(a),
+        Command::Figures(a) => cmd_figures(a),
     }
 }
 
@@ -103,8 +47,8 @@ fn scene_or_default(path: Option<&Path>) -> Result<Scene, Error> {
     path.map_or_else(|| Ok(Scene::default_scene()), Scene::load)
 }
 
-fn cmd_run(scene: Option<&Path>, json: bool) -> Outcome {
-    let scene = scene_or_default(scene)?;
+fn cmd_run(RunArgs { scene, json }: RunArgs) -> Outcome {
+    let scene = scene_or_default(scene.as_deref())?;
     let outcome = solve(&scene.impact, &scene.options)?;
     // with --json, stdout holds the JSON object alone; notes go to stderr
     let note = |k: &str, v: &Path| match json {
@@ -135,33 +79,34 @@ fn cmd_run(scene: Option<&Path>, json: bool) -> Outcome {
     Ok(())
 }
 
-fn cmd_curve(scene: Option<&Path>, v0: &str, log: bool, out: &Path) -> Outcome {
+fn cmd_curve(
+    CurveArgs {
+        scene,
+        v0,
+        log,
+        out,
+    }: CurveArgs,
+) -> Outcome {
     // the input is checked before the scene is read or anything solved
-    let range = curve::VelocityRange::parse(v0, log)?;
-    let scene = scene_or_default(scene)?;
+    let range = curve::VelocityRange::parse(&v0, log)?;
+    let scene = scene_or_default(scene.as_deref())?;
     let c = with_progress(range.n as u64, "curve", |tick| {
         curve::run(&scene.impact, &scene.options, &range, tick)
     })?;
-    let written = curve::write_outputs(out, &c, log)?;
+    let written = curve::write_outputs(&out, &c, log)?;
     print!("{}", curve::summary(&c, Some(&written)));
     Ok(())
 }
 
-fn cmd_dem(
-    scene: Option<&Path>,
-    v0: &str,
-    format: dem::Format,
-    log: bool,
-    modulus: dem::ModulusChoice,
-    out: &Path,
-) -> Outcome {
+fn cmd_dem(a: DemArgs) -> Outcome {
+    let (format, modulus) = (dem::Format::from(a.format), a.modulus.into());
     // the input is checked before the scene is read or anything solved
-    let range = curve::VelocityRange::parse_optional_n(v0, log, dem::DEFAULT_VELOCITIES)?;
-    let scene = scene_or_default(scene)?;
+    let range = curve::VelocityRange::parse_optional_n(&a.v0, a.log, dem::DEFAULT_VELOCITIES)?;
+    let scene = scene_or_default(a.scene.as_deref())?;
     let report = with_progress(range.n as u64, "dem", |tick| {
         dem::run(&scene.impact, &scene.options, &range, modulus, tick)
     })?;
-    let written = dem::write_outputs(out, &report, format)?;
+    let written = dem::write_outputs(&a.out, &report, format)?;
     print!("{}", report.text(format));
     if format == dem::Format::Json {
         println!();
@@ -175,14 +120,14 @@ fn cmd_dem(
     Ok(())
 }
 
-fn cmd_cor(groups: &GroupArgs, input: Option<&Path>, solver: SolverKind, rtol: f64) -> Outcome {
+fn cmd_cor(a: CorArgs) -> Outcome {
     let opts = SolveOptions {
-        solver,
-        rtol,
+        solver: a.solver,
+        rtol: a.rtol,
         ..Default::default()
     };
     opts.validate()?;
-    if let Some(path) = input {
+    if let Some(path) = &a.input {
         let input = batch::read_rows(path)?;
         let file = path.display().to_string();
         let outcomes = batch::solve_rows(&file, &input.rows, &opts)?;
@@ -205,7 +150,8 @@ fn cmd_cor(groups: &GroupArgs, input: Option<&Path>, solver: SolverKind, rtol: f
     }
     // clap guarantees all three are present without --input
     let g = |x: Option<f64>| x.unwrap_or(f64::NAN);
-    let impact = Impact::from_groups(Groups::new(g(groups.nu), g(groups.p2), g(groups.p3))?)?;
+    let (nu, p2, p3) = (g(a.groups.nu), g(a.groups.p2), g(a.groups.p3));
+    let impact = Impact::from_groups(Groups::new(nu, p2, p3)?)?;
     let o = solve(&impact, &opts)?;
     if let Some(why) = &o.fallback {
         // `why` is the refusal of fast, which names it ("fast: requested rtol ...")
@@ -221,7 +167,29 @@ fn cmd_cor(groups: &GroupArgs, input: Option<&Path>, solver: SolverKind, rtol: f
     Ok(())
 }
 
-fn cmd_validate(out: &Path, figures: &Path, check: bool) -> Outcome {
+fn cmd_indent(a: IndentArgs) -> Outcome {
+    let material = Material::with_poisson(a.g_inf, a.g1, a.eta, a.nu)?;
+    let (kind, rate, peak, times) = (a.history, a.rate, a.peak_time, a.times.as_deref());
+    let rows = indent::run(
+        &material,
+        a.radius,
+        kind,
+        rate,
+        peak,
+        times,
+        a.solver.into(),
+    )?;
+    stdout(&indent::csv(&rows))
+}
+
+fn cmd_validate(
+    ValidateArgs {
+        out,
+        figures,
+        check,
+    }: ValidateArgs,
+) -> Outcome {
+    let (out, figures) = (out.as_path(), figures.as_path());
     let units = validate::units();
     if check {
         let c = with_progress(units, "validate", |tick| validate::check(out, tick))?;
@@ -245,7 +213,13 @@ fn cmd_validate(out: &Path, figures: &Path, check: bool) -> Outcome {
     Ok(())
 }
 
-fn cmd_bench(opts: &bench::BenchOptions, out: &Path, report: &Path) -> Outcome {
+fn cmd_bench(a: BenchArgs) -> Outcome {
+    let (out, report) = (a.out.as_path(), a.report.as_path());
+    let opts = &bench::BenchOptions {
+        quick: a.quick,
+        budget: a.budget,
+        batch_rows: a.batch_rows,
+    };
     if !opts.quick {
         // a missing report or markers fail before minutes of work
         sections::require_section(report, &sections::PERFORMANCE)?;
@@ -261,7 +235,8 @@ fn cmd_bench(opts: &bench::BenchOptions, out: &Path, report: &Path) -> Outcome {
     Ok(())
 }
 
-fn cmd_stress(rows: usize, seed: u64, out: &Path, report: &Path) -> Outcome {
+fn cmd_stress(a: StressArgs) -> Outcome {
+    let (rows, seed, out, report) = (a.rows, a.seed, a.out.as_path(), a.report.as_path());
     // a missing report or markers fail before minutes of work
     sections::require_section(report, &sections::STRESS)?;
     let r = with_progress(rows as u64, "stress", |tick| stress::run(rows, seed, tick));
@@ -282,7 +257,34 @@ fn cmd_stress(rows: usize, seed: u64, out: &Path, report: &Path) -> Outcome {
     }
 }
 
-fn cmd_sweep(plan: &sweep::Plan, out: &Path, opts: &sweep::SweepOptions) -> Outcome {
+fn cmd_reference(a: ReferenceArgs) -> Outcome {
+    let written = mdr_impact::solvers::theory::generate_reference(&a.out)?;
+    let (n, manifest) = (written.files.len(), written.manifest.display());
+    println!("wrote {n} files and {manifest}");
+    Ok(())
+}
+
+fn cmd_sweep(a: SweepArgs) -> Outcome {
+    let plan = sweep::Plan {
+        nu: sweep::parse_nu_list(&a.nu)?,
+        log_p2: sweep::LogRange::parse("log-p2", &a.log_p2)?,
+        log_p3: sweep::LogRange::parse("log-p3", &a.log_p3)?,
+        sampling: match a.random {
+            Some(n) => sweep::Sampling::Random { n, seed: a.seed },
+            None => sweep::Sampling::Grid,
+        },
+    };
+    let opts = &sweep::SweepOptions {
+        solve: SolveOptions {
+            solver: a.solver,
+            rtol: a.rtol,
+            ..Default::default()
+        },
+        dimensional: a.dimensional.then_some(a.seed),
+        check_every: a.check_every,
+        resume: !a.fresh,
+    };
+    let out = a.out.as_path();
     let points = plan.points()?;
     let summary = with_progress(points.len() as u64, &out.display().to_string(), |tick| {
         sweep::run(&points, out, opts, tick)
@@ -292,28 +294,22 @@ fn cmd_sweep(plan: &sweep::Plan, out: &Path, opts: &sweep::SweepOptions) -> Outc
     Ok(())
 }
 
-fn cmd_fit(
-    data: &Path,
-    scene: Option<&Path>,
-    kind: fit::ModelKind,
-    fix: &[String],
-    tau_range: Option<&str>,
-    out: &Path,
-    json: bool,
-) -> Outcome {
-    let fixes = fix
+fn cmd_fit(a: FitArgs) -> Outcome {
+    let (scene, kind, tau_range) = (a.scene.as_deref(), a.model, a.tau_range.as_deref());
+    let fixes = a
+        .fix
         .iter()
         .map(|f| f.parse::<fit::Fix>())
         .collect::<Result<Vec<_>, _>>()?;
     let name = scene.map_or("default scene".to_string(), |p| p.display().to_string());
     let scene = scene_or_default(scene)?;
     let sphere = fit::data::scene_sphere(&scene, &name)?;
-    let data = fit::data::read(data, sphere, &name)?;
+    let data = fit::data::read(&a.data, sphere, &name)?;
     let taus = fit::prony_times(&kind, tau_range, &data)?;
     let (model, fixed) = fit::setup_model(kind, &fixes, taus)?;
     let result = fit::fit(&model, &data, &fixed)?;
-    let written = fit::report::write_outputs(out, &result)?;
-    if json {
+    let written = fit::report::write_outputs(&a.out, &result)?;
+    if a.json {
         println!("{}", fit::report::json(&result));
         eprintln!("material written to {}", written.toml.display());
         eprintln!("plot written to {}", written.svg.display());
@@ -323,16 +319,20 @@ fn cmd_fit(
     Ok(())
 }
 
-fn cmd_fit_study(
-    config: impl Fn(bool) -> fit::study::StudyConfig,
-    cor_only: bool,
-    report: Option<&Path>,
-) -> Outcome {
+fn cmd_fit_study(a: FitStudyArgs) -> Outcome {
+    let report = a.report.as_deref();
+    let config = |contact_times| fit::study::StudyConfig {
+        reps: a.reps,
+        seed: a.seed,
+        noise: a.noise,
+        velocities: a.velocities,
+        contact_times,
+    };
     if let Some(p) = report {
         sections::require_section(p, &sections::FIT_STUDY)?;
     }
     let mut reports = Vec::new();
-    let studies: &[bool] = if cor_only { &[false] } else { &[true, false] };
+    let studies: &[bool] = if a.cor_only { &[false] } else { &[true, false] };
     for &contact_times in studies {
         let cfg = config(contact_times);
         let r = with_progress(cfg.reps as u64, "fit-study", |tick| {
