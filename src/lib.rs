@@ -78,6 +78,6 @@ pub mod solvers;
 
 pub use error::{Error, Result};
 pub use model::bodies::{Body, BodyMaterial, Side, TwoBodies};
-pub use model::impact::{Groups, History, Impact, ImpactMaterial, Outcome, Sphere, Work};
-pub use model::material::{Bulk, GeneralMaterial, Material, Prony, PronyTerm};
+pub use model::impact::{Groups, History, Impact, Outcome, Sphere, Target, Work};
+pub use model::material::{Bulk, BulkInput, Material, Prony, PronyTerm, StandardSolid};
 pub use solvers::{solve, Resolution, SolveOptions, SolverKind};

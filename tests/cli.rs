@@ -466,11 +466,7 @@ fn polymer_scenes_run() {
         let cor = v["cor"].as_f64().unwrap();
         let truth = solve(
             &case.impact().unwrap(),
-            &SolveOptions {
-                solver: SolverKind::Reference,
-                rtol: 1e-10,
-                ..Default::default()
-            },
+            &SolveOptions::with(SolverKind::Reference, 1e-10),
         )
         .unwrap()
         .cor;

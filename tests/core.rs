@@ -7,6 +7,9 @@ use mdr_impact::solvers::mdr;
 use mdr_impact::*;
 use nalgebra::{Matrix2, Vector2};
 
+mod common;
+use common::{case_groups, case_impact, opts};
+
 /// The network of Eq. (8) under a unit step of u relaxes exactly like the closed-form G_eq(t).
 /// The linear ODE w' = A w + b is solved exactly with the matrix exponential of the 2x2 state
 /// matrix (Sylvester's formula from its eigenvalues, which come from its trace and determinant:
@@ -24,7 +27,10 @@ fn element_network_relaxes_like_equivalent_relaxation() {
         (0.499, 3.0, 7.0),
         (0.5, 50.0, 1.0),
     ] {
-        let m = Material::with_poisson(1.0, g1, eta, nu).unwrap();
+        let m = Material::with_poisson(1.0, g1, eta, nu)
+            .unwrap()
+            .as_standard_solid()
+            .unwrap();
         let net = ElementNetwork::new(&m);
         let g = m.equivalent_relaxation();
         let col = |w1, w3| {
@@ -65,27 +71,15 @@ fn impact(nu: f64, p2: f64, p3: f64) -> Impact {
     Impact::from_groups(Groups::new(nu, p2, p3).unwrap()).unwrap()
 }
 
-fn opts(solver: SolverKind, rtol: f64) -> SolveOptions {
-    SolveOptions {
-        solver,
-        rtol,
-        ..Default::default()
-    }
-}
-
 /// Random dimensional inputs with the same (nu, p2, p3) give the same CoR (the paper's check).
 #[test]
 fn scaling_invariance() {
-    let (nu, p2, p3) = (0.45, 0.01, 1.0);
+    let g = case_groups("dissipative-nu045");
+    let (nu, p2, p3) = (g.nu, g.p2, g.p3);
     let base = solve(&impact(nu, p2, p3), &opts(SolverKind::Mdr, 1e-6)).unwrap();
     // deterministic pseudo-random dimensional inputs over many decades
-    let mut state = 12345u64;
-    let mut rnd = || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = mdr_impact::rng::SplitMix64::new(12345);
+    let mut rnd = || rng.uniform();
     for _ in 0..6 {
         let m = 10f64.powf(-4.0 + 6.0 * rnd());
         let r = 10f64.powf(-4.0 + 4.0 * rnd());
@@ -165,7 +159,7 @@ fn elastic_mdr_is_hertz() {
 /// Both MDR schemes converge to the same CoR; mdr-euler at first order.
 #[test]
 fn euler_converges_to_mdr() {
-    let imp = impact(0.45, 0.01, 1.0);
+    let imp = case_impact("dissipative-nu045");
     let fine = solve(&imp, &opts(SolverKind::Mdr, 1e-7)).unwrap().cor;
     let mat = solvers::canonical_material(&imp).unwrap();
     let layout = mdr::pilot(&mat.prony).unwrap();
@@ -211,7 +205,7 @@ fn error_variants() {
     let mat = Material::with_poisson(1.0, 1.0, 1.0, 0.3).unwrap();
     let s = Sphere::new(1.0, 1.0).unwrap();
     assert!(matches!(
-        Impact::new(s, 0.0, mat),
+        Impact::new(s, 0.0, mat.clone()),
         Err(OutOfRange {
             field: "velocity",
             ..
@@ -232,7 +226,7 @@ fn error_variants() {
         Err(NonFinite { .. })
     ));
     // rtol range
-    let imp = impact(0.45, 0.01, 1.0);
+    let imp = case_impact("dissipative-nu045");
     assert!(matches!(
         solve(&imp, &opts(SolverKind::Mdr, 0.0)),
         Err(OutOfRange { field: "rtol", .. })

@@ -8,8 +8,9 @@ use common::{run, stderr};
 
 use mdr_impact::apps::curve::{self, VelocityRange, CSV_HEADER};
 use mdr_impact::io::scene::Scene;
+use mdr_impact::model::material::{BulkInput, ShearProny};
 use mdr_impact::solvers::theory::HertzImpact;
-use mdr_impact::{solve, Error, Impact, SolveOptions};
+use mdr_impact::{solve, Error, Impact, Material, SolveOptions};
 
 fn no_progress() {}
 
@@ -70,7 +71,7 @@ fn rows_are_solve_at_those_velocities_bit_for_bit() {
             ..scene.options
         };
         for (row, v) in c.rows.iter().zip(range.values()) {
-            let m = *scene.impact.standard_solid().unwrap();
+            let m = scene.impact.half_space().unwrap().clone();
             let o = solve(&Impact::new(scene.impact.sphere(), v, m).unwrap(), &opts).unwrap();
             assert_eq!(row.v0.to_bits(), v.to_bits());
             assert_eq!(row.cor.to_bits(), o.cor.to_bits(), "v0 = {v}");
@@ -163,7 +164,17 @@ fn default_curve_tends_to_one_at_both_ends() {
 fn general_material_is_annotated_by_contact_time_crossovers() {
     let scene = Scene::default_scene();
     let m = scene.impact.standard_solid().unwrap();
-    let g = Impact::with_general(scene.impact.sphere(), 0.99, m.general()).unwrap();
+    // the default elastomer's shear term split in two equal halves: a general material (two
+    // terms) that is the same solid
+    let (g_1, tau) = (m.g_1(), m.tau());
+    let shear = ShearProny::new(
+        m.g_inf(),
+        &[(0.5 * g_1, tau), (0.5 * g_1, tau * (1.0 + 1e-9))],
+    );
+    let bulk = BulkInput::Elastic(m.k_0());
+    let general = Material::general(shear.unwrap(), bulk).unwrap();
+    let g = Impact::new(scene.impact.sphere(), 0.99, general).unwrap();
+    assert!(g.general_material().is_some());
     let l = curve::limits(&g);
     assert!(l.p3_unit_velocity.is_none());
     let s = g.sphere();

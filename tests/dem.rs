@@ -231,6 +231,85 @@ fn report_of_synthetic_data_has_no_warning_and_the_exact_lines() {
     assert!(pair.contains("\npair_coeff 1 2 hertz/material"), "{pair}");
 }
 
+/// Sum of `ln(t_law / t)^2` over both laws: what `--modulus fit` minimises.
+fn log_time_misfit(r: &dem::DemReport) -> f64 {
+    [&r.constant_times.law, &r.viscoelastic_times.law]
+        .iter()
+        .flat_map(|law| law.iter().zip(&r.rows))
+        .map(|(t, row)| (t / row.contact_time).ln().powi(2))
+        .sum()
+}
+
+/// `--modulus fit` from a stiffness 100x too soft: the contact-time warnings of the soft
+/// stiffness go, the CoR fits are untouched (a law's CoR does not depend on `E*`), the fitted
+/// stiffness is a minimum of the log misfit (below the truth's, below 0.9x and 1.1x of itself)
+/// and a fixed point of [`dem::fit_stiffness`].
+#[test]
+fn fitted_stiffness_matches_the_contact_times() {
+    let truth = contact();
+    let rows = law_rows(&truth, 1e-4, "0.1:10:8");
+    let soft =
+        HertzContact::new(truth.mass, truth.radius, truth.effective_modulus / 100.0).unwrap();
+    let at = |c: HertzContact| {
+        dem::fit(
+            rows.clone(),
+            true,
+            ModulusChoice::Relaxed,
+            c,
+            Geometry::Wall,
+            None,
+        )
+        .unwrap()
+    };
+    let before = at(soft);
+    let misses = |r: &dem::DemReport| {
+        r.warnings
+            .iter()
+            .filter(|w| w.contains("contact time misses ours"))
+            .count()
+    };
+    assert_eq!(misses(&before), 2, "{:?}", before.warnings);
+    assert!(before
+        .warnings
+        .iter()
+        .all(|w| !w.contains("contact time") || w.contains("--modulus fit")));
+    let r = dem::fit(
+        rows.clone(),
+        true,
+        ModulusChoice::Fit,
+        soft,
+        Geometry::Wall,
+        None,
+    )
+    .unwrap();
+    assert_eq!(misses(&r), 0, "{:?}", r.warnings);
+    assert!(r.viscoelastic_times.worst_rel_error < 0.10);
+    for (a, b) in [
+        (&before.constant.fit, &r.constant.fit),
+        (&before.viscoelastic.fit, &r.viscoelastic.fit),
+    ] {
+        assert!((a.worst_rel_error - b.worst_rel_error).abs() < 1e-9);
+    }
+    let e = r.contact.effective_modulus;
+    assert!((dem::fit_stiffness(&r) / e - 1.0).abs() < 1e-9);
+    let misfit = log_time_misfit(&r);
+    for scale in [0.9, 1.1] {
+        let c = HertzContact::new(truth.mass, truth.radius, scale * e).unwrap();
+        assert!(misfit < log_time_misfit(&at(c)), "scale {scale}");
+    }
+    assert!(misfit <= log_time_misfit(&at(truth)));
+    let json: serde_json::Value = serde_json::from_str(&r.json()).unwrap();
+    assert_eq!(json["hertz"]["modulus"], "fit");
+    for law in ["constant", "viscoelastic"] {
+        assert!(
+            json["laws"][law]["worst_contact_time_rel_error"]
+                .as_f64()
+                .unwrap()
+                < 0.2
+        );
+    }
+}
+
 // ---- command line -------------------------------------------------------------------------
 
 #[test]

@@ -20,14 +20,7 @@ fn check_refusing(
         .par_iter()
         .filter_map(|r| {
             let imp = Impact::from_groups(Groups::new(r.nu, r.p2, r.p3).unwrap()).unwrap();
-            let o = match solve(
-                &imp,
-                &SolveOptions {
-                    solver,
-                    rtol,
-                    ..Default::default()
-                },
-            ) {
+            let o = match solve(&imp, &SolveOptions::with(solver, rtol)) {
                 Ok(o) => o,
                 Err(mdr_impact::Error::AccuracyNotReached { .. }) if r.cor < refuse_below => {
                     return None

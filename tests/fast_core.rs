@@ -2,16 +2,13 @@
 //! wide random sweep without NaN. The throwaway timing over the paper's range is `#[ignore]`d:
 //! `cargo test --release --test fast_core -- --ignored --nocapture`.
 
-use mdr_impact::{solvers::fast, Error, Groups, Impact, Prony, PronyTerm};
+use mdr_impact::{solvers::fast, Error, Prony, PronyTerm};
+
+mod common;
+use common::canonical;
 
 const K16: f64 = 16.0 / 3.0;
 const HERTZ_TC: f64 = 2.9432751843247047;
-
-fn canonical(nu: f64, p2: f64, p3: f64) -> Prony {
-    Impact::from_groups(Groups::new(nu, p2, p3).unwrap())
-        .unwrap()
-        .canonical_relaxation()
-}
 
 fn hertz(modulus: f64) -> (f64, f64) {
     let d = (1.25 / (K16 * modulus)).powf(0.4);
@@ -290,13 +287,8 @@ fn errors_are_reported() {
 /// in [1e-6, 1e6]), `n` per rtol of `rtols`: always a finite CoR in (0, 1 + 10 rtol] and finite
 /// outputs (every 7th solve with its history).
 fn wide_random_sweep(seed: u64, n: usize, rtols: &[f64]) {
-    let mut seed = seed;
-    let mut rnd = || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = mdr_impact::rng::SplitMix64::new(seed);
+    let mut rnd = || rng.uniform();
     for i in 0..n * rtols.len() {
         let nu = -0.99 + 1.49 * rnd();
         let p2 = 10f64.powf(-6.0 + 12.0 * rnd());

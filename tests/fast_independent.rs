@@ -3,7 +3,10 @@
 //! RK4 in `t` with a bisected Ting root on a Hermite-interpolated history for restitution), and
 //! the slow-relaxation asymptote of the CoR.
 
-use mdr_impact::{solvers::fast, Groups, Impact, Prony, PronyTerm};
+use mdr_impact::{solvers::fast, Prony, PronyTerm};
+
+mod common;
+use common::canonical;
 
 const K16: f64 = 16.0 / 3.0;
 
@@ -172,12 +175,6 @@ fn brute(prony: &Prony, n: usize) -> (f64, f64, f64) {
         z = z1;
         assert!(t < 1e3 * t_m, "restitution did not end");
     }
-}
-
-fn canonical(nu: f64, p2: f64, p3: f64) -> Prony {
-    Impact::from_groups(Groups::new(nu, p2, p3).unwrap())
-        .unwrap()
-        .canonical_relaxation()
 }
 
 /// Moderate relaxation times (RK4 stays stable and accurate with a few thousand steps):

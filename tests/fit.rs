@@ -435,7 +435,7 @@ fn fixed_bulk_modulus_lets_cor_data_reach_g_inf() {
     let mut text = String::from("v0,cor\n");
     for i in 0..10 {
         let v0 = 0.01 * 10f64.powf(4.0 * i as f64 / 9.0);
-        let e = solve(&Impact::new(sphere(), v0, material).unwrap(), &opts)
+        let e = solve(&Impact::new(sphere(), v0, material.clone()).unwrap(), &opts)
             .unwrap()
             .cor;
         text.push_str(&format!("{v0:e},{e:e}\n"));

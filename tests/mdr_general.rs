@@ -4,17 +4,12 @@
 //! integrate. Checked against `fast` at 1e-10; the one-term case against the standard solid;
 //! `mdr-euler` refuses general materials with one line.
 
-use mdr_impact::model::material::rheology::{BulkProny, BulkRheology, GeneralMaterial, ShearProny};
-use mdr_impact::{solve, Error, Impact, Material, Resolution, SolveOptions, SolverKind, Sphere};
+use mdr_impact::model::material::{BulkInput, BulkProny, BulkRheology, ShearProny};
+use mdr_impact::{solve, Error, Impact, Material, Resolution, SolverKind, Sphere};
 use std::time::Instant;
 
-fn opts(solver: SolverKind, rtol: f64) -> SolveOptions {
-    SolveOptions {
-        solver,
-        rtol,
-        ..Default::default()
-    }
-}
+mod common;
+use common::opts;
 
 fn sphere() -> Sphere {
     Sphere::new(4.11e-3, 5.0e-3).unwrap()
@@ -24,18 +19,18 @@ fn sphere() -> Sphere {
 /// Pa, `g_inf = 1e6` Pa, and a viscoelastic bulk of three terms (the contact time is ~4 ms).
 fn general(n: usize, lo: f64, hi: f64) -> Impact {
     let bulk = BulkProny::new(2.0e7, &[(4.0e7, 2.0e-5), (1.0e7, 1.0e-3), (3.0e7, 3.0e-2)]).unwrap();
-    with_bulk(n, lo, hi, BulkRheology::Prony(bulk))
+    with_bulk(n, lo, hi, BulkInput::Prony(bulk))
 }
 
 /// The shear series of [`general`] with another bulk.
-fn with_bulk(n: usize, lo: f64, hi: f64, bulk: BulkRheology) -> Impact {
+fn with_bulk(n: usize, lo: f64, hi: f64, bulk: BulkInput) -> Impact {
     let terms: Vec<(f64, f64)> = (0..n)
         .map(|i| {
             let tau = lo * (hi / lo).powf(i as f64 / (n - 1) as f64);
             (3.0e6 * (tau / 1e-3).powf(-0.2), tau)
         })
         .collect();
-    let m = GeneralMaterial::new(ShearProny::new(1.0e6, &terms).unwrap(), bulk).unwrap();
+    let m = Material::general(ShearProny::new(1.0e6, &terms).unwrap(), bulk).unwrap();
     Impact::with_general(sphere(), 0.99, m).unwrap()
 }
 
@@ -48,8 +43,8 @@ fn mdr_agrees_with_fast() {
         (3, 1e-4, 1e-2, None),
         (10, 1e-7, 1e2, None),
         (30, 1e-10, 1e10, None),
-        (10, 1e-7, 1e2, Some(BulkRheology::Poisson(0.3))),
-        (10, 1e-7, 1e2, Some(BulkRheology::Incompressible)),
+        (10, 1e-7, 1e2, Some(BulkInput::Poisson(0.3))),
+        (10, 1e-7, 1e2, Some(BulkInput::Incompressible)),
         // elastic shear, viscoelastic bulk: G_eq relaxes through the bulk alone
         (0, 1.0, 1.0, None),
     ];
@@ -112,31 +107,52 @@ fn explicit_resolution_converges() {
     assert!(errs[2] < 1e-3, "{errs:?}");
 }
 
-/// The standard solid written as a one-term general material: `mdr` integrates it on the
-/// general network (not on the closed-form `G_eq` the standard solid uses), so the two agree to
-/// their discretisation errors, each within its rtol of `fast`.
+/// The standard solid written as a one-term Prony series has the standard solid's shape: the
+/// same groups, and every solver takes the same path and gives the same outcome to the bit (the
+/// relaxation time is the one `eta / G_1` the standard-solid constructor stores). The general
+/// network of the same solid (the route of a multi-term material) agrees with the closed-form
+/// route to its discretisation error, within its rtol of `fast`.
 #[test]
-fn one_term_general_matches_standard_solid() {
+fn one_term_series_is_the_standard_solid() {
+    use mdr_impact::model::material::GeneralNetwork;
+    use mdr_impact::{solvers::canonical_material, solvers::mdr};
     for nu in [0.5, 0.49, 0.3] {
         let m = Material::with_poisson(1.0e6, 1.0e7, 500.0, nu).unwrap();
+        let shear = ShearProny::new(1.0e6, &[(1.0e7, 500.0 / 1.0e7)]).unwrap();
+        let series = Material::general(shear, BulkInput::Poisson(nu)).unwrap();
+        assert!(series.as_standard_solid().is_some());
         let standard = Impact::new(sphere(), 0.99, m).unwrap();
-        let general = Impact::with_general(sphere(), 0.99, m.general()).unwrap();
-        let rtol = 1e-6;
-        let a = solve(&standard, &opts(SolverKind::Mdr, rtol)).unwrap();
-        let b = solve(&general, &opts(SolverKind::Mdr, rtol)).unwrap();
-        let f = solve(&standard, &opts(SolverKind::Fast, 1e-11)).unwrap();
-        let (ea, eb) = ((a.cor / f.cor - 1.0).abs(), (b.cor / f.cor - 1.0).abs());
-        eprintln!(
-            "nu {nu}: standard mdr error {ea:.2e}, general-network mdr error {eb:.2e}, \
-             difference {:.2e}",
-            (a.cor / b.cor - 1.0).abs()
+        let general = Impact::new(sphere(), 0.99, series).unwrap();
+        assert!(general.general_material().is_none());
+        let (ga, gb) = (standard.groups().unwrap(), general.groups().unwrap());
+        assert_eq!((ga.nu, ga.p2), (gb.nu, gb.p2));
+        assert!((ga.p3 / gb.p3 - 1.0).abs() < 1e-15);
+        assert_eq!(
+            standard.equivalent_relaxation(),
+            general.equivalent_relaxation()
         );
-        assert!(ea < rtol && eb < rtol, "{ea:e} {eb:e}");
-        if nu == 0.5 {
-            // incompressible: the network is the shear branch alone, G_eq = G, and its step is
-            // the G_eq scheme's, operation for operation up to the summation order
-            assert!((a.cor / b.cor - 1.0).abs() < 1e-12);
+        for (solver, rtol) in [
+            (SolverKind::Auto, 1e-6),
+            (SolverKind::Fast, 1e-6),
+            (SolverKind::Reference, 1e-6),
+            (SolverKind::Mdr, 1e-4),
+        ] {
+            let a = solve(&standard, &opts(solver, rtol)).unwrap();
+            let b = solve(&general, &opts(solver, rtol)).unwrap();
+            assert_eq!(a.cor.to_bits(), b.cor.to_bits(), "{solver}");
+            assert_eq!(a.contact_time.to_bits(), b.contact_time.to_bits());
+            assert_eq!(a.work, b.work, "{solver}");
         }
+        let rtol = 1e-6;
+        let f = solve(&standard, &opts(SolverKind::Fast, 1e-11)).unwrap();
+        let mut c = canonical_material(&standard).unwrap();
+        let s = standard.scales();
+        let net = GeneralNetwork::new(standard.half_space().unwrap(), s.modulus, s.time);
+        c.network = mdr::Network::General(net);
+        let b = mdr::solve_rtol(mdr::Scheme::Exponential, &c, rtol, false, u64::MAX).unwrap();
+        let eb = (b.cor / f.cor - 1.0).abs();
+        eprintln!("nu {nu}: general-network mdr error {eb:.2e}");
+        assert!(eb < rtol, "{eb:e}");
     }
 }
 
@@ -176,12 +192,18 @@ fn mdr_euler_takes_general_material() {
         e.to_string(),
         mdr_impact::solvers::MDR_EULER_GENERAL_UNSUPPORTED
     );
-    // one shear term with an elastic bulk: the standard solid's Euler network, on one grid
+    // the standard solid's Euler network of Eq. (8) and the general network of the same solid
+    // (one shear term, elastic bulk), on one grid
+    use mdr_impact::model::material::GeneralNetwork;
     use mdr_impact::{solvers::canonical_material, solvers::mdr};
     let m = mdr_impact::Material::with_poisson(1.0e6, 1.0e7, 500.0, 0.45).unwrap();
-    let a = canonical_material(&Impact::new(sphere(), 0.99, m).unwrap()).unwrap();
-    let b =
-        canonical_material(&Impact::with_general(sphere(), 0.99, m.general()).unwrap()).unwrap();
+    let imp = Impact::new(sphere(), 0.99, m).unwrap();
+    let a = canonical_material(&imp).unwrap();
+    assert!(matches!(a.network, mdr::Network::StandardSolid(_)));
+    let mut b = a.clone();
+    let s = imp.scales();
+    let net = GeneralNetwork::new(imp.half_space().unwrap(), s.modulus, s.time);
+    b.network = mdr::Network::General(net);
     let layout = mdr::pilot(&a.prony).unwrap();
     let grid = mdr::Grid::from_layout(&layout, 200, 2000);
     let (oa, ob) = (

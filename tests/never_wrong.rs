@@ -7,14 +7,7 @@ use mdr_impact::{
 
 fn groups_solve(nu: f64, p2: f64, p3: f64, solver: SolverKind, rtol: f64) -> Result<Outcome> {
     let imp = Impact::from_groups(Groups::new(nu, p2, p3)?)?;
-    solve(
-        &imp,
-        &SolveOptions {
-            solver,
-            rtol,
-            ..Default::default()
-        },
-    )
+    solve(&imp, &SolveOptions::with(solver, rtol))
 }
 
 /// The steep dissipative corner (p2 below 1e-5, p3 about 1e3, CoR about 5e-6): `fast` was 25x,

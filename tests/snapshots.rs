@@ -29,24 +29,8 @@ fn impact_agreement() {
     for case in IMPACTS {
         let reference = reference_outcome(case).unwrap();
         let imp = case.impact().unwrap();
-        let m = solve(
-            &imp,
-            &SolveOptions {
-                solver: SolverKind::Mdr,
-                rtol: 1e-4,
-                ..Default::default()
-            },
-        )
-        .unwrap();
-        let r8 = solve(
-            &imp,
-            &SolveOptions {
-                solver: SolverKind::Reference,
-                rtol: 1e-8,
-                ..Default::default()
-            },
-        )
-        .unwrap();
+        let m = solve(&imp, &SolveOptions::with(SolverKind::Mdr, 1e-4)).unwrap();
+        let r8 = solve(&imp, &SolveOptions::with(SolverKind::Reference, 1e-8)).unwrap();
         let rel = |a: f64, b: f64| fmt_err((a - b) / b);
         out.push_str(&format!(
             "{} | {} | {} {} {} | {} {} {} {} | {} {}\n",

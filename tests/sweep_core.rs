@@ -10,11 +10,7 @@ use mdr_impact::{Error, SolveOptions, SolverKind};
 
 fn opts(dimensional: Option<u64>) -> SweepOptions {
     SweepOptions {
-        solve: SolveOptions {
-            solver: SolverKind::Mdr,
-            rtol: 1e-3,
-            ..Default::default()
-        },
+        solve: SolveOptions::with(SolverKind::Mdr, 1e-3),
         dimensional,
         check_every: 2,
         resume: true,

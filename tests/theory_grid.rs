@@ -20,7 +20,8 @@ fn grid_timing_and_estimates() {
                     .unwrap()
                     .canonical_material()
                     .unwrap()
-                    .equivalent_relaxation();
+                    .equivalent_relaxation()
+                    .unwrap();
                 let t0 = Instant::now();
                 let o = impact(&pr, 1e-10, false).unwrap();
                 times.push(t0.elapsed().as_secs_f64() * 1e3);

@@ -104,8 +104,9 @@ fn si_outcome_matches_canonical_scaled() {
     use mdr_impact::model::hertz::hertz_outcome;
     use mdr_impact::{Impact, Material, Sphere};
     let m = Material::with_poisson(3e6, 0.0, 0.0, 0.3).unwrap();
-    let imp = Impact::new(Sphere::new(0.012, 0.004).unwrap(), 1.7, m).unwrap();
+    let imp = Impact::new(Sphere::new(0.012, 0.004).unwrap(), 1.7, m.clone()).unwrap();
     let si = hertz_outcome(&imp, None).unwrap();
+    let m = m.as_standard_solid().unwrap();
     let e_star = m.effective_modulus(m.g_inf()) / m.g_inf();
     let can = HertzImpact::canonical(e_star)
         .unwrap()

@@ -3,18 +3,12 @@
 //! asymptote, input errors.
 
 use mdr_impact::model::hertz::HertzImpact;
-use mdr_impact::model::material::Prony;
 use mdr_impact::solvers::theory::reference::impact;
 use mdr_impact::solvers::theory::viscoelastic::{response, OneMaximum};
-use mdr_impact::{Error, Groups, History};
+use mdr_impact::{Error, History};
 
-fn canonical(nu: f64, p2: f64, p3: f64) -> Prony {
-    Groups::new(nu, p2, p3)
-        .unwrap()
-        .canonical_material()
-        .unwrap()
-        .equivalent_relaxation()
-}
+mod common;
+use common::canonical;
 
 /// Elastic series: e = 1 to 1e-12, contact time, maximum indentation and force equal Hertz with
 /// `E* = 4 c_inf` to 1e-10 (relative).

@@ -13,6 +13,7 @@ fn cases() -> Vec<(&'static str, Prony)> {
             .canonical_material()
             .unwrap()
             .equivalent_relaxation()
+            .unwrap()
     };
     vec![
         ("dissipative nu=0.3", canon(0.3, 0.1, 1.0)),
@@ -75,7 +76,8 @@ fn triangle_quadrature_matches_closed_form() {
 fn elastic_is_hertzian_force_law() {
     let prony = Material::with_poisson(1.0, 0.0, 0.0, 0.25)
         .unwrap()
-        .equivalent_relaxation();
+        .equivalent_relaxation()
+        .unwrap();
     let r = 2.0;
     for h in [
         Prescribed::half_sine(1.0, 1.0).unwrap(),

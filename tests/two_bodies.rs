@@ -12,38 +12,28 @@
 use std::process::Command;
 
 use mdr_impact::io::scene::Scene;
-use mdr_impact::model::material::{BulkProny, BulkRheology, GeneralMaterial, Material, ShearProny};
+use mdr_impact::model::material::{BulkInput, BulkProny, Material, ShearProny};
 use mdr_impact::report::validate::fmt_err;
 use mdr_impact::{
-    solve, Body, BodyMaterial, Error, Impact, Outcome, Side, SolveOptions, SolverKind, Sphere,
-    TwoBodies,
+    solve, Body, BodyMaterial, Error, Impact, Outcome, Side, SolverKind, Sphere, TwoBodies,
 };
 
-fn opts(solver: SolverKind, rtol: f64) -> SolveOptions {
-    SolveOptions {
-        solver,
-        rtol,
-        ..Default::default()
-    }
-}
+mod common;
+use common::{opts, rel_err};
 
 fn run(imp: &Impact, solver: SolverKind, rtol: f64) -> Outcome {
     solve(imp, &opts(solver, rtol)).unwrap()
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    (a - b) / b
 }
 
 fn elastomer() -> Material {
     Material::with_poisson(1.0e6, 1.0e7, 500.0, 0.49).unwrap()
 }
 
-fn polymer() -> GeneralMaterial {
+fn polymer() -> Material {
     let shear =
         ShearProny::new(5.0e6, &[(2.0e7, 1.0e-6), (3.0e7, 1.0e-5), (1.0e7, 1.0e-4)]).unwrap();
     let bulk = BulkProny::new(2.0e8, &[(1.0e8, 1.0e-5)]).unwrap();
-    GeneralMaterial::new(shear, BulkRheology::Prony(bulk)).unwrap()
+    Material::general(shear, BulkInput::Prony(bulk)).unwrap()
 }
 
 fn body(side: Side, mass: f64, radius: f64, m: BodyMaterial) -> Body {
@@ -86,12 +76,12 @@ fn two_body_checks() {
         (
             "standard solid",
             Impact::new(sphere, v0, elastomer()).unwrap(),
-            BodyMaterial::StandardSolid(elastomer()),
+            BodyMaterial::Viscoelastic(elastomer()),
         ),
         (
             "general",
             Impact::with_general(sphere, v0, polymer()).unwrap(),
-            BodyMaterial::General(polymer()),
+            BodyMaterial::Viscoelastic(polymer()),
         ),
     ] {
         let two = collision(body(Side::A, mass, radius, a_mat), wall(Side::B), v0);
@@ -120,7 +110,7 @@ fn two_body_checks() {
         )
         .unwrap();
         let bulk = BulkProny::new(2.0e16, &[(1.0e16, 1.0e-5)]).unwrap();
-        GeneralMaterial::new(shear, BulkRheology::Prony(bulk)).unwrap()
+        Material::general(shear, BulkInput::Prony(bulk)).unwrap()
     };
     let one = Impact::new(sphere, v0, elastomer()).unwrap();
     let near = collision(
@@ -128,13 +118,13 @@ fn two_body_checks() {
             Side::A,
             mass,
             radius,
-            BodyMaterial::StandardSolid(elastomer()),
+            BodyMaterial::Viscoelastic(elastomer()),
         ),
         body(
             Side::B,
             f64::INFINITY,
             f64::INFINITY,
-            BodyMaterial::General(stiff),
+            BodyMaterial::Viscoelastic(stiff),
         ),
         v0,
     );
@@ -143,7 +133,7 @@ fn two_body_checks() {
         line(
             &format!("B x 1e8 stiffer ({})", solver.name()),
             "CoR",
-            rel(o2.cor, o1.cor),
+            rel_err(o2.cor, o1.cor),
             1e-7,
         );
     }
@@ -152,7 +142,7 @@ fn two_body_checks() {
     for (name, mat, half) in [
         (
             "standard solid",
-            BodyMaterial::StandardSolid(elastomer()),
+            BodyMaterial::Viscoelastic(elastomer()),
             Impact::new(
                 Sphere::new(mass / 2.0, radius / 2.0).unwrap(),
                 v0,
@@ -162,13 +152,13 @@ fn two_body_checks() {
         ),
         (
             "general",
-            BodyMaterial::General(polymer()),
+            BodyMaterial::Viscoelastic(polymer()),
             Impact::with_general(Sphere::new(mass / 2.0, radius / 2.0).unwrap(), v0, {
                 let shear =
                     ShearProny::new(2.5e6, &[(1.0e7, 1.0e-6), (1.5e7, 1.0e-5), (0.5e7, 1.0e-4)])
                         .unwrap();
                 let bulk = BulkProny::new(1.0e8, &[(0.5e8, 1.0e-5)]).unwrap();
-                GeneralMaterial::new(shear, BulkRheology::Prony(bulk)).unwrap()
+                Material::general(shear, BulkInput::Prony(bulk)).unwrap()
             })
             .unwrap(),
         ),
@@ -188,13 +178,13 @@ fn two_body_checks() {
             line(
                 &format!("identical bodies, {name} ({})", solver.name()),
                 "CoR",
-                rel(o2.cor, o1.cor),
+                rel_err(o2.cor, o1.cor),
                 bound,
             );
             line(
                 &format!("identical bodies, {name} ({})", solver.name()),
                 "contact time",
-                rel(o2.contact_time, o1.contact_time),
+                rel_err(o2.contact_time, o1.contact_time),
                 bound,
             );
         }
@@ -205,9 +195,14 @@ fn two_body_checks() {
         Side::A,
         4.6e-3,
         1.0e-2,
-        BodyMaterial::StandardSolid(elastomer()),
+        BodyMaterial::Viscoelastic(elastomer()),
     );
-    let b = body(Side::B, 6.3e-4, 5.0e-3, BodyMaterial::General(polymer()));
+    let b = body(
+        Side::B,
+        6.3e-4,
+        5.0e-3,
+        BodyMaterial::Viscoelastic(polymer()),
+    );
     let ab = collision(a.clone(), b.clone(), 2.0);
     let ba = collision(
         body(Side::A, b.mass(), b.radius(), b.material().clone()),
@@ -220,7 +215,7 @@ fn two_body_checks() {
         line(
             &format!("swap A and B ({})", solver.name()),
             "CoR",
-            rel(o2.cor, o1.cor),
+            rel_err(o2.cor, o1.cor),
             1e-12,
         );
         mixed.push((solver, o1));
@@ -232,20 +227,20 @@ fn two_body_checks() {
     line(
         "mixed pair: fast against reference",
         "CoR",
-        rel(cor(SolverKind::Fast), reference),
+        rel_err(cor(SolverKind::Fast), reference),
         2e-10,
     );
     line(
         "mixed pair: mdr (stacked networks) against reference",
         "CoR",
-        rel(cor(SolverKind::Mdr), reference),
+        rel_err(cor(SolverKind::Mdr), reference),
         1e-4,
     );
     let tight = run(&ab, SolverKind::Mdr, 1e-6);
     line(
         "mixed pair: mdr rtol 1e-6 against reference",
         "CoR",
-        rel(tight.cor, reference),
+        rel_err(tight.cor, reference),
         1e-6,
     );
 
@@ -264,9 +259,14 @@ fn rebound_velocities_conserve_momentum() {
         Side::A,
         4.6e-3,
         1.0e-2,
-        BodyMaterial::StandardSolid(elastomer()),
+        BodyMaterial::Viscoelastic(elastomer()),
     );
-    let b = body(Side::B, 6.3e-4, 5.0e-3, BodyMaterial::General(polymer()));
+    let b = body(
+        Side::B,
+        6.3e-4,
+        5.0e-3,
+        BodyMaterial::Viscoelastic(polymer()),
+    );
     let imp = collision(a, b, 2.0);
     let o = run(&imp, SolverKind::Fast, 1e-8);
     let two = imp.bodies().unwrap();
@@ -283,7 +283,7 @@ fn rebound_velocities_conserve_momentum() {
 
 #[test]
 fn bad_bodies_are_refused() {
-    let m = || BodyMaterial::StandardSolid(elastomer());
+    let m = || BodyMaterial::Viscoelastic(elastomer());
     for (mass, radius) in [
         (0.0, 1.0),
         (-1.0, 1.0),
@@ -293,7 +293,8 @@ fn bad_bodies_are_refused() {
     ] {
         assert!(matches!(
             Body::new(Side::B, mass, radius, m()),
-            Err(Error::OutOfRange { field, .. }) if field.starts_with("body B")
+            Err(Error::In { place, source }) if place == "body B"
+                && matches!(*source, Error::OutOfRange { .. })
         ));
     }
     let sphere = |mat| body(Side::A, 1.0, 1.0, mat);
@@ -365,8 +366,8 @@ fn bad_scenes_are_one_line_errors() {
                 .to_string(),
             "exactly two",
         ),
-        (TWO.replace("mass = 4.6e-3", "mass = 0.0"), "body A mass"),
-        (TWO.replace("mass = 4.6e-3", "mass = -1.0"), "body A mass"),
+        (TWO.replace("mass = 4.6e-3", "mass = 0.0"), "body A: mass"),
+        (TWO.replace("mass = 4.6e-3", "mass = -1.0"), "body A: mass"),
         (
             TWO.replace("mass = 4.6e-3", "mass = 1.0\ndensity = 1.0"),
             "not both",
@@ -455,7 +456,7 @@ fn catalogue_collisions_agree() {
             (SolverKind::Mdr, 1e-4),
         ] {
             let e = run(&imp, solver, rtol).cor;
-            let err = rel(e, truth).abs();
+            let err = rel_err(e, truth).abs();
             assert!(
                 err <= rtol + 1e-10,
                 "{} {} rtol {rtol:e}: {err:e}",

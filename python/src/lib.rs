@@ -17,12 +17,11 @@ use pyo3::types::{PyDict, PyTuple};
 use mdr_impact::error::escape_text;
 use mdr_impact::io::scene::Scene as RsScene;
 use mdr_impact::model::bodies::Side;
-use mdr_impact::model::material::{BulkProny, BulkRheology, ShearProny};
+use mdr_impact::model::material::{BulkInput, BulkProny, BulkRheology, ShearProny};
 use mdr_impact::{
     apps::batch, apps::curve, apps::dem, io::output, model::tolerances, report::catalogue,
-    Body as RsBody, BodyMaterial, Bulk, GeneralMaterial as RsGeneral, Groups, History, Impact,
-    ImpactMaterial, Material as RsMaterial, Outcome, Resolution, SolveOptions, SolverKind,
-    Sphere as RsSphere, TwoBodies,
+    Body as RsBody, BodyMaterial, Bulk, Groups, History, Impact, Material as RsMaterial, Outcome,
+    Resolution, SolveOptions, SolverKind, Sphere as RsSphere, StandardSolid, Target, TwoBodies,
 };
 
 pyo3::create_exception!(
@@ -283,6 +282,16 @@ impl Prony {
 #[derive(Debug, Clone, PartialEq)]
 struct Material {
     inner: RsMaterial,
+    /// The standard solid's view of `inner` (built by a standard-solid constructor).
+    solid: StandardSolid,
+}
+
+impl Material {
+    /// The Python `Material` of a material of the standard solid's shape.
+    fn of(inner: RsMaterial) -> Option<Self> {
+        let solid = inner.as_standard_solid()?;
+        Some(Self { inner, solid })
+    }
 }
 
 #[pymethods]
@@ -304,7 +313,9 @@ impl Material {
                 return Err(usage("missing poisson (-1 < nu <= 0.5) or k_0 (Pa)".into()))
             }
         };
-        Ok(Self { inner })
+        Self::of(inner).ok_or_else(|| {
+            usage("internal: a standard solid without the standard solid's shape".into())
+        })
     }
     /// Relaxed shear modulus `G_inf` (Pa).
     #[getter]
@@ -314,57 +325,59 @@ impl Material {
     /// Relaxing shear modulus `G_1` (Pa).
     #[getter]
     fn g_1(&self) -> f64 {
-        self.inner.g_1()
+        self.solid.g_1()
     }
     /// Shear viscosity `eta` (Pa s).
     #[getter]
     fn eta(&self) -> f64 {
-        self.inner.eta()
+        self.solid.eta()
     }
     /// Bulk modulus `K_0` (Pa), `inf` when incompressible.
     #[getter]
     fn k_0(&self) -> f64 {
-        self.inner.k_0()
+        self.solid.k_0()
     }
     /// Static Poisson ratio (0.5 when incompressible).
     #[getter]
     fn poisson(&self) -> f64 {
-        match self.inner.bulk() {
+        match self.solid.bulk() {
             Bulk::Incompressible => 0.5,
-            Bulk::Modulus(_) => self.inner.poisson(),
+            Bulk::Modulus(_) => self.solid.poisson(),
         }
     }
     /// Relaxation time `tau = eta / g_1` (s).
     #[getter]
     fn tau(&self) -> f64 {
-        self.inner.tau()
+        self.solid.tau()
     }
     /// True when `g_1 = 0` or `eta = 0` (Hertz with `g_inf`).
     #[getter]
     fn is_elastic(&self) -> bool {
-        self.inner.is_elastic()
+        self.solid.is_elastic()
     }
     /// The equivalent incompressible relaxation function `G_eq(t)` (docs/theory.md §2) as a
     /// `Prony` (Pa, s).
     fn equivalent_relaxation(&self) -> Prony {
-        Prony::of(&self.inner.equivalent_relaxation())
+        Prony::of(&self.solid.equivalent_relaxation())
     }
     /// This standard solid as a `GeneralMaterial` (one shear term).
     fn general(&self) -> GeneralMaterial {
+        let bulk = BulkInput::from(self.inner.bulk().clone());
         GeneralMaterial {
-            inner: self.inner.general(),
+            inner: RsMaterial::general(self.inner.shear().clone(), bulk)
+                .expect("a validated shear series and resolved bulk"),
         }
     }
     fn __repr__(&self) -> String {
-        let bulk = match self.inner.bulk() {
+        let bulk = match self.solid.bulk() {
             Bulk::Incompressible => "poisson=0.5".to_string(),
             Bulk::Modulus(k) => format!("k_0={k:?}"),
         };
         format!(
             "Material(g_inf={:?}, g_1={:?}, eta={:?}, {bulk})",
             self.inner.g_inf(),
-            self.inner.g_1(),
-            self.inner.eta()
+            self.solid.g_1(),
+            self.solid.eta()
         )
     }
 }
@@ -375,7 +388,7 @@ impl Material {
 #[pyclass(frozen, eq, module = "mdr_impact")]
 #[derive(Debug, Clone, PartialEq)]
 struct GeneralMaterial {
-    inner: RsGeneral,
+    inner: RsMaterial,
 }
 
 #[pymethods]
@@ -404,13 +417,13 @@ impl GeneralMaterial {
         }
         let s = ok(ShearProny::new(shear.relaxed, &shear.terms))?;
         let rheology = match (bulk, k_0, poisson) {
-            (Some(b), _, _) => BulkRheology::Prony(ok(BulkProny::new(b.relaxed, &b.terms))?),
-            (_, Some(k), _) => BulkRheology::Elastic(k),
-            (_, _, Some(nu)) => BulkRheology::Poisson(nu),
-            _ => BulkRheology::Incompressible,
+            (Some(b), _, _) => BulkInput::Prony(ok(BulkProny::new(b.relaxed, &b.terms))?),
+            (_, Some(k), _) => BulkInput::Elastic(k),
+            (_, _, Some(nu)) => BulkInput::Poisson(nu),
+            _ => BulkInput::Incompressible,
         };
         Ok(Self {
-            inner: ok(RsGeneral::new(s, rheology))?,
+            inner: ok(RsMaterial::general(s, rheology))?,
         })
     }
     /// The shear series `G(t)` as validated (terms sorted by time, equal times merged, zero
@@ -440,7 +453,7 @@ impl GeneralMaterial {
         match self.inner.bulk() {
             BulkRheology::Incompressible => "incompressible",
             BulkRheology::Prony(_) => "prony",
-            BulkRheology::Elastic(_) | BulkRheology::Poisson(_) => "elastic",
+            BulkRheology::Elastic(_) => "elastic",
         }
     }
     /// Relaxed bulk modulus `K(inf)` (Pa), `inf` when incompressible.
@@ -455,7 +468,7 @@ impl GeneralMaterial {
     fn __repr__(&self) -> String {
         let bulk = match self.inner.bulk() {
             BulkRheology::Incompressible => "incompressible=True".to_string(),
-            BulkRheology::Elastic(k) | BulkRheology::Poisson(k) => format!("k_0={k:?}"),
+            BulkRheology::Elastic(k) => format!("k_0={k:?}"),
             BulkRheology::Prony(_) => format!(
                 "bulk={}",
                 self.bulk().map(|b| b.__repr__()).unwrap_or_default()
@@ -468,10 +481,10 @@ impl GeneralMaterial {
 /// A Python material object (`Material`, `GeneralMaterial`) as the library's body material.
 fn body_material(m: &Bound<'_, PyAny>) -> PyResult<BodyMaterial> {
     if let Ok(m) = m.cast::<Material>() {
-        return Ok(BodyMaterial::StandardSolid(m.get().inner));
+        return Ok(BodyMaterial::Viscoelastic(m.get().inner.clone()));
     }
     if let Ok(m) = m.cast::<GeneralMaterial>() {
-        return Ok(BodyMaterial::General(m.get().inner.clone()));
+        return Ok(BodyMaterial::Viscoelastic(m.get().inner.clone()));
     }
     Err(pyo3::exceptions::PyTypeError::new_err(format!(
         "material must be a Material or a GeneralMaterial, not {}",
@@ -479,15 +492,16 @@ fn body_material(m: &Bound<'_, PyAny>) -> PyResult<BodyMaterial> {
     )))
 }
 
-/// A body material as a Python object (`None` when rigid).
+/// A body material as a Python object (`None` when rigid): a `Material` when it was written as
+/// a standard solid, else a `GeneralMaterial`.
 fn material_object(py: Python<'_>, m: &BodyMaterial) -> PyResult<Option<Py<PyAny>>> {
-    Ok(match m {
-        BodyMaterial::Rigid => None,
-        BodyMaterial::StandardSolid(m) => Some(Py::new(py, Material { inner: *m })?.into_any()),
-        BodyMaterial::General(m) => {
-            Some(Py::new(py, GeneralMaterial { inner: m.clone() })?.into_any())
-        }
-    })
+    let Some(m) = m.material() else {
+        return Ok(None);
+    };
+    Ok(Some(match Material::of(m.clone()) {
+        Some(s) if m.is_written_as_standard_solid() => Py::new(py, s)?.into_any(),
+        _ => Py::new(py, GeneralMaterial { inner: m.clone() })?.into_any(),
+    }))
 }
 
 // ------------------------------------------------------------------------------------------
@@ -537,18 +551,11 @@ struct Body {
     inner: RsBody,
 }
 
-/// `e` without the `body A ` of its field: a body is named only once it is placed in a scene.
+/// `e` without the body it is placed at (`Error::In`): a body is named only once it is placed in
+/// a scene.
 fn unsided(e: mdr_impact::Error) -> mdr_impact::Error {
     match e {
-        mdr_impact::Error::OutOfRange {
-            field,
-            value,
-            allowed,
-        } => mdr_impact::Error::OutOfRange {
-            field: field.strip_prefix("body A ").unwrap_or(field),
-            value,
-            allowed,
-        },
+        mdr_impact::Error::In { source, .. } => *source,
         other => other,
     }
 }
@@ -669,8 +676,7 @@ impl Scene {
     ) -> PyResult<Self> {
         let impact = match (sphere, material, bodies) {
             (Some(s), Some(m), None) => match body_material(m)? {
-                BodyMaterial::StandardSolid(m) => ok(Impact::new(s.inner, velocity, m))?,
-                BodyMaterial::General(m) => ok(Impact::with_general(s.inner, velocity, m))?,
+                BodyMaterial::Viscoelastic(m) => ok(Impact::new(s.inner, velocity, m))?,
                 BodyMaterial::Rigid => unreachable!("body_material never returns Rigid"),
             },
             (None, None, Some((a, b))) => {
@@ -804,12 +810,9 @@ impl Scene {
     /// The half-space material (`Material` or `GeneralMaterial`), `None` for two bodies.
     #[getter]
     fn material(&self, py: Python<'_>) -> PyResult<Option<Py<PyAny>>> {
-        match self.inner.impact.material() {
-            ImpactMaterial::StandardSolid(m) => {
-                material_object(py, &BodyMaterial::StandardSolid(*m))
-            }
-            ImpactMaterial::General(m) => material_object(py, &BodyMaterial::General(m.clone())),
-            ImpactMaterial::TwoBodies(_) => Ok(None),
+        match self.inner.impact.target() {
+            Target::HalfSpace(m) => material_object(py, &BodyMaterial::Viscoelastic(m.clone())),
+            Target::TwoBodies(_) => Ok(None),
         }
     }
     /// The two bodies `(a, b)` of a collision, else `None`.
@@ -929,7 +932,7 @@ impl ImpactResult {
             dissipated_energy: o.dissipated_energy,
             estimated_rel_error: o.cor_error_estimate,
             solver: o.solver,
-            fallback: o.fallback,
+            fallback: o.fallback.map(|e| e.to_string()),
             work: o.work,
             histories: o.history,
             velocities,

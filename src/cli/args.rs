@@ -162,6 +162,10 @@ pub struct DemArgs {
     /// modulus.
     #[arg(long, value_enum, default_value_t = values::Modulus::Relaxed)]
     pub modulus: values::Modulus,
+    /// LAMMPS version YYYYMMDD (the date `lmp -h` prints) the lammps lines are for;
+    /// default: current LAMMPS.
+    #[arg(long)]
+    pub lammps_version: Option<String>,
     /// Output folder.
     #[arg(long, default_value = "out")]
     pub out: PathBuf,

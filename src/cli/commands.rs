@@ -7,7 +7,7 @@ use mdr_impact::apps::{batch, curve, dem, fit, indent, sweep};
 use mdr_impact::error::escape_text;
 use mdr_impact::io::{output, plot, scene::Scene};
 use mdr_impact::report::{bench, figures, sections, stress, validate};
-use mdr_impact::{solve, Error, Groups, Impact, Material, SolveOptions, SolverKind};
+use mdr_impact::{solve, Error, Groups, Impact, Material, SolveOptions};
 
 use super::args::*;
 use super::{progress_bar, with_progress, Failure, Outcome};
@@ -99,7 +99,8 @@ fn cmd_curve(
 }
 
 fn cmd_dem(a: DemArgs) -> Outcome {
-    let (format, modulus) = (dem::Format::from(a.format), a.modulus.into());
+    let format = a.format.with_lammps_version(a.lammps_version.as_deref())?;
+    let modulus = a.modulus.into();
     // the input is checked before the scene is read or anything solved
     let range = curve::VelocityRange::parse_optional_n(&a.v0, a.log, dem::DEFAULT_VELOCITIES)?;
     let scene = scene_or_default(a.scene.as_deref())?;
@@ -153,14 +154,7 @@ fn cmd_cor(a: CorArgs) -> Outcome {
     let (nu, p2, p3) = (g(a.groups.nu), g(a.groups.p2), g(a.groups.p3));
     let impact = Impact::from_groups(Groups::new(nu, p2, p3)?)?;
     let o = solve(&impact, &opts)?;
-    if let Some(why) = &o.fallback {
-        // `why` is the refusal of fast, which names it ("fast: requested rtol ...")
-        let fast = SolverKind::Fast.name();
-        let why = if why.starts_with(&format!("{fast}:")) {
-            why.clone()
-        } else {
-            format!("{fast}: {why}")
-        };
+    if let Some(why) = o.fallback_reason() {
         eprintln!("note: answered by {} ({})", o.solver, escape_text(&why));
     }
     println!("{}", o.cor);

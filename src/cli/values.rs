@@ -28,13 +28,13 @@ pub enum Format {
     Json,
 }
 
-impl From<Format> for dem::Format {
-    fn from(f: Format) -> Self {
-        match f {
-            Format::Lammps => dem::Format::Lammps,
-            Format::Liggghts => dem::Format::Liggghts,
-            Format::Json => dem::Format::Json,
-        }
+impl Format {
+    /// The library's format of this name, with `--lammps-version` applied.
+    pub fn with_lammps_version(self, version: Option<&str>) -> mdr_impact::Result<dem::Format> {
+        let name = self.to_possible_value().map(|v| v.get_name().to_string());
+        name.unwrap_or_default()
+            .parse::<dem::Format>()?
+            .with_lammps_version(version)
     }
 }
 
@@ -86,7 +86,10 @@ mod tests {
         };
         for f in Format::value_variants() {
             let n = name(&|| f.to_possible_value());
-            assert_eq!(n.parse::<dem::Format>().unwrap(), dem::Format::from(*f));
+            assert_eq!(
+                n.parse::<dem::Format>().unwrap(),
+                f.with_lammps_version(None).unwrap()
+            );
         }
         for m in Modulus::value_variants() {
             let n = name(&|| m.to_possible_value());

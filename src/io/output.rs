@@ -5,8 +5,8 @@ use std::path::Path;
 
 use crate::error::{Error, Result};
 use crate::model::bodies::BodyMaterial;
-use crate::model::impact::{History, Impact, ImpactMaterial, Outcome};
-use crate::model::material::{Bulk, BulkRheology, GeneralMaterial, Material};
+use crate::model::impact::{History, Impact, Outcome, Target};
+use crate::model::material::{Bulk, BulkRheology, Material, StandardSolid};
 
 /// Write a file atomically: the bytes go to a temporary file in the same directory, which is
 /// renamed over `path` only when complete. Parent directories are created.
@@ -66,8 +66,17 @@ pub fn fmt(x: f64) -> String {
     format!("{x:e}")
 }
 
+/// One line describing a material as it was written: a standard solid by its parameters, any
+/// other by its terms.
+fn material(m: &Material) -> String {
+    match m.as_standard_solid() {
+        Some(s) if m.is_written_as_standard_solid() => standard_solid(&s),
+        _ => general(m),
+    }
+}
+
 /// One line describing a standard solid.
-fn standard_solid(m: &Material) -> String {
+fn standard_solid(m: &StandardSolid) -> String {
     let nu = if m.bulk() == Bulk::Incompressible {
         0.5
     } else {
@@ -87,10 +96,10 @@ fn standard_solid(m: &Material) -> String {
 }
 
 /// One line describing a general material.
-fn general(m: &GeneralMaterial) -> String {
+fn general(m: &Material) -> String {
     let shear = m.shear();
     let bulk = match m.bulk() {
-        BulkRheology::Incompressible | BulkRheology::Poisson(_) => "incompressible".to_string(),
+        BulkRheology::Incompressible => "incompressible".to_string(),
         BulkRheology::Elastic(k) => format!("elastic, K_0 = {k:.4e} Pa"),
         BulkRheology::Prony(p) => format!(
             "{} term{}, k_inf = {:.4e} Pa",
@@ -122,10 +131,9 @@ pub fn summary(impact: &Impact, o: &Outcome) -> String {
         format!("m = {:.6e} kg, R = {:.6e} m", s.mass(), s.radius()),
     );
     line("impact velocity", format!("{:.6e} m/s", impact.velocity()));
-    match impact.material() {
-        ImpactMaterial::StandardSolid(m) => line("material", standard_solid(m)),
-        ImpactMaterial::General(m) => line("material", general(m)),
-        ImpactMaterial::TwoBodies(b) => {
+    match impact.target() {
+        Target::HalfSpace(m) => line("material", material(m)),
+        Target::TwoBodies(b) => {
             for (name, body) in [("body A", b.a()), ("body B", b.b())] {
                 line(
                     name,
@@ -135,8 +143,7 @@ pub fn summary(impact: &Impact, o: &Outcome) -> String {
                         body.radius(),
                         match body.material() {
                             BodyMaterial::Rigid => "rigid".to_string(),
-                            BodyMaterial::StandardSolid(m) => standard_solid(m),
-                            BodyMaterial::General(m) => general(m),
+                            BodyMaterial::Viscoelastic(m) => material(m),
                         }
                     ),
                 );
@@ -168,7 +175,7 @@ pub fn summary(impact: &Impact, o: &Outcome) -> String {
     }
     line("solver", o.solver.to_string());
     if let Some(why) = &o.fallback {
-        line("  instead of fast", why.clone());
+        line("  instead of fast", why.to_string());
     }
     line("coefficient of restitution", format!("{:.9}", o.cor));
     if let Some(est) = o.cor_error_estimate {
@@ -257,7 +264,7 @@ fn value(o: &Outcome) -> serde_json::Value {
         "dissipated_energy": o.dissipated_energy,
         "solver": o.solver,
         "estimated_rel_error": o.cor_error_estimate,
-        "fallback": o.fallback,
+        "fallback": o.fallback.as_ref().map(|e| e.to_string()),
         "work": {
             "steps": o.work.steps,
             "elements": o.work.elements,

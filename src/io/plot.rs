@@ -197,3 +197,85 @@ pub fn velocity_span(path: &Path, velocities: &[f64]) -> Result<(f64, f64)> {
         .at(path.display().to_string())),
     }
 }
+
+/// One panel of [`panels_svg`]: its caption, y-axis label and range, and its lines.
+#[derive(Debug, Clone)]
+pub struct Panel {
+    /// Caption above the panel.
+    pub caption: String,
+    /// Label of the y axis (with its unit).
+    pub y_label: String,
+    /// The y range `(low, high)`.
+    pub y_range: (f64, f64),
+    /// The lines, drawn in order and named in a legend.
+    pub lines: Vec<CorLine>,
+}
+
+/// The SVG text of panels stacked vertically over one x axis from `x0` to `x1` (logarithmic
+/// with `log`) labelled `x_label`, each panel 900 x 480 px with its own legend at the lower
+/// left. Rendered in memory only; `path` names the file in errors.
+pub fn panels_svg(
+    path: &Path,
+    (x0, x1): (f64, f64),
+    log: bool,
+    x_label: &str,
+    panels: &[Panel],
+) -> Result<String> {
+    let e = |e: &dyn std::fmt::Display| Error::io(path, e);
+    if !(x0 < x1) || panels.is_empty() {
+        return Err(Error::Internal(
+            "panels_svg needs a non-empty x range and a panel",
+        ));
+    }
+    let mut svg = String::new();
+    {
+        let height = 480 * panels.len() as u32;
+        let root = SVGBackend::with_string(&mut svg, (900, height)).into_drawing_area();
+        root.fill(&WHITE).map_err(|x| e(&x))?;
+        let areas = root.split_evenly((panels.len(), 1));
+        for (area, panel) in areas.iter().zip(panels) {
+            let (y0, y1) = panel.y_range;
+            let mut builder = ChartBuilder::on(area);
+            builder
+                .caption(&panel.caption, ("sans-serif", 20))
+                .margin(12)
+                .x_label_area_size(44)
+                .y_label_area_size(80);
+            macro_rules! draw {
+                ($chart:expr) => {{
+                    let mut chart = $chart.map_err(|x| e(&x))?;
+                    chart
+                        .configure_mesh()
+                        .x_desc(x_label)
+                        .y_desc(panel.y_label.as_str())
+                        .draw()
+                        .map_err(|x| e(&x))?;
+                    for (name, pts, color, width) in &panel.lines {
+                        let style = color.stroke_width(*width);
+                        chart
+                            .draw_series(LineSeries::new(pts.iter().copied(), style))
+                            .map_err(|x| e(&x))?
+                            .label(name.as_str())
+                            .legend(move |(x, y)| {
+                                PathElement::new(vec![(x, y), (x + 18, y)], style)
+                            });
+                    }
+                    chart
+                        .configure_series_labels()
+                        .position(SeriesLabelPosition::LowerLeft)
+                        .border_style(BLACK)
+                        .background_style(WHITE.mix(0.85))
+                        .draw()
+                        .map_err(|x| e(&x))?;
+                }};
+            }
+            if log {
+                draw!(builder.build_cartesian_2d((x0..x1).log_scale(), y0..y1));
+            } else {
+                draw!(builder.build_cartesian_2d(x0..x1, y0..y1));
+            }
+        }
+        root.present().map_err(|x| e(&x))?;
+    }
+    Ok(svg)
+}

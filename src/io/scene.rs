@@ -50,7 +50,7 @@ use std::path::{Path, PathBuf};
 use crate::error::{escape_text, Error, Result};
 use crate::model::bodies::{Body, BodyMaterial, Side, TwoBodies};
 use crate::model::impact::{Impact, Sphere};
-use crate::model::material::{BulkProny, BulkRheology, GeneralMaterial, Material, ShearProny};
+use crate::model::material::{BulkInput, BulkProny, Material, ShearProny};
 use crate::solvers::{Resolution, SolveOptions, SolverKind};
 
 /// The embedded default scene: a 10 mm steel ball (4.11 g) dropped from 5 cm on a thick,
@@ -269,8 +269,7 @@ impl Scene {
 /// `[material.bulk]`.
 fn impact_of(sphere: Sphere, velocity: f64, m: &RawMaterial, base: &Path) -> Result<Impact> {
     match material_of(m, base)? {
-        BodyMaterial::StandardSolid(m) => Impact::new(sphere, velocity, m),
-        BodyMaterial::General(m) => Impact::with_general(sphere, velocity, m),
+        BodyMaterial::Viscoelastic(m) => Impact::new(sphere, velocity, m),
         BodyMaterial::Rigid => Err(scene_error(
             "[material] rigid = true: a rigid half-space under a rigid sphere has no \
              compliance; only a [[body]] of a collision can be rigid"
@@ -290,7 +289,12 @@ fn collision(bodies: &[RawBody], velocity: f64, base: &Path) -> Result<Impact> {
     };
     let a = body_of(Side::A, a, base)?;
     let b = body_of(Side::B, b, base)?;
-    Impact::with_bodies(TwoBodies::new(a, b)?, velocity)
+    // the domain names what is wrong; the scene adds where (the text of earlier versions)
+    let bodies = TwoBodies::new(a, b).map_err(|e| match e {
+        Error::InvalidBodies { reason } => scene_error(format!("[[body]]: {reason}")),
+        e => e,
+    })?;
+    Impact::with_bodies(bodies, velocity)
 }
 
 /// One `[[body]]`; its errors name the body (`A` is the first table, `B` the second).
@@ -390,7 +394,9 @@ fn material_of(m: &RawMaterial, base: &Path) -> Result<BodyMaterial> {
                  and [material.bulk]"
             )));
         };
-        return Ok(BodyMaterial::General(general_material(shear, bulk, base)?));
+        return Ok(BodyMaterial::Viscoelastic(general_material(
+            shear, bulk, base,
+        )?));
     }
     for (key, value) in [("g_inf", m.g_inf), ("g_1", m.g_1), ("eta", m.eta)] {
         if value.is_none() {
@@ -419,7 +425,7 @@ fn material_of(m: &RawMaterial, base: &Path) -> Result<BodyMaterial> {
             ))
         }
     };
-    Ok(BodyMaterial::StandardSolid(material))
+    Ok(BodyMaterial::Viscoelastic(material))
 }
 
 fn scene_error(message: String) -> Error {
@@ -616,7 +622,7 @@ fn pairs_of(table: &str, key: &str, rows: &[Vec<f64>]) -> Result<Vec<(f64, f64)>
 }
 
 /// The general material of `[material.shear]` and `[material.bulk]`.
-fn general_material(shear: &RawShear, bulk: &RawBulk, base: &Path) -> Result<GeneralMaterial> {
+fn general_material(shear: &RawShear, bulk: &RawBulk, base: &Path) -> Result<Material> {
     let (g_inf, terms) = series_of(
         Table::Shear,
         &SeriesKeys {
@@ -666,11 +672,11 @@ fn general_material(shear: &RawShear, bulk: &RawBulk, base: &Path) -> Result<Gen
                     .into(),
             ));
         }
-        BulkRheology::Incompressible
+        BulkInput::Incompressible
     } else if let Some(k) = bulk.k_0 {
-        BulkRheology::Elastic(k)
+        BulkInput::Elastic(k)
     } else if let Some(nu) = bulk.poisson {
-        BulkRheology::Poisson(nu)
+        BulkInput::Poisson(nu)
     } else {
         let (k_inf, terms) = series_of(
             Table::Bulk,
@@ -683,7 +689,7 @@ fn general_material(shear: &RawShear, bulk: &RawBulk, base: &Path) -> Result<Gen
             },
             base,
         )?;
-        BulkRheology::Prony(BulkProny::new(k_inf, &terms).map_err(|e| Table::Bulk.rename(e))?)
+        BulkInput::Prony(BulkProny::new(k_inf, &terms).map_err(|e| Table::Bulk.rename(e))?)
     };
-    GeneralMaterial::new(shear, rheology).map_err(|e| Table::Bulk.rename(e))
+    Material::general(shear, rheology).map_err(|e| Table::Bulk.rename(e))
 }

@@ -11,8 +11,8 @@ use std::fmt::Write;
 
 use crate::io::scene::Scene;
 use crate::model::bodies::{Body, BodyMaterial};
-use crate::model::impact::ImpactMaterial;
-use crate::model::material::{Bulk, BulkRheology, GeneralMaterial, Material};
+use crate::model::impact::Target;
+use crate::model::material::{Bulk, BulkRheology, Material, StandardSolid};
 
 /// An `f64` as a TOML float: shortest round-trip digits, always with a `.` or an exponent
 /// (`1.0`, `5e-3`, `inf`).
@@ -48,8 +48,17 @@ fn string(s: &str) -> String {
     out
 }
 
+/// The keys of a material as it was written, in the table `table` (`material` or
+/// `body.material`): a standard solid's parameters, or the shear and bulk tables.
+fn material(out: &mut String, table: &str, m: &Material) {
+    match m.as_standard_solid() {
+        Some(s) if m.is_written_as_standard_solid() => standard_solid(out, table, &s),
+        _ => general(out, table, m),
+    }
+}
+
 /// The keys of a standard solid, in the table `table` (`material` or `body.material`).
-fn standard_solid(out: &mut String, table: &str, m: &Material) {
+fn standard_solid(out: &mut String, table: &str, m: &StandardSolid) {
     let _ = writeln!(out, "[{table}]");
     let _ = writeln!(out, "g_inf = {}       # Pa", num(m.g_inf()));
     let _ = writeln!(out, "g_1 = {}         # Pa", num(m.g_1()));
@@ -63,7 +72,7 @@ fn standard_solid(out: &mut String, table: &str, m: &Material) {
 }
 
 /// The tables `[TABLE.shear]` and `[TABLE.bulk]` of a general material.
-fn general(out: &mut String, table: &str, m: &GeneralMaterial) {
+fn general(out: &mut String, table: &str, m: &Material) {
     let _ = writeln!(out, "[{table}.shear]");
     let _ = writeln!(out, "g_inf = {}       # Pa", num(m.shear().g_inf()));
     let _ = writeln!(
@@ -76,10 +85,6 @@ fn general(out: &mut String, table: &str, m: &GeneralMaterial) {
         BulkRheology::Incompressible => out.push_str("incompressible = true\n"),
         BulkRheology::Elastic(k) => {
             let _ = writeln!(out, "k_0 = {}         # Pa", num(*k));
-        }
-        // never stored after validation (resolved to an elastic or incompressible bulk)
-        BulkRheology::Poisson(nu) => {
-            let _ = writeln!(out, "poisson = {}", num(*nu));
         }
         BulkRheology::Prony(p) => {
             let _ = writeln!(out, "k_inf = {}       # Pa", num(p.k_inf()));
@@ -98,13 +103,9 @@ fn body(out: &mut String, b: &Body) {
     let _ = writeln!(out, "radius = {}      # m", num(b.radius()));
     match b.material() {
         BodyMaterial::Rigid => out.push_str("rigid = true\n"),
-        BodyMaterial::StandardSolid(m) => {
+        BodyMaterial::Viscoelastic(m) => {
             out.push('\n');
-            standard_solid(out, "body.material", m);
-        }
-        BodyMaterial::General(m) => {
-            out.push('\n');
-            general(out, "body.material", m);
+            material(out, "body.material", m);
         }
     }
 }
@@ -135,16 +136,12 @@ impl Scene {
                 num(s.radius())
             );
         };
-        match imp.material() {
-            ImpactMaterial::StandardSolid(m) => {
+        match imp.target() {
+            Target::HalfSpace(m) => {
                 sphere(&mut out);
-                standard_solid(&mut out, "material", m);
+                material(&mut out, "material", m);
             }
-            ImpactMaterial::General(m) => {
-                sphere(&mut out);
-                general(&mut out, "material", m);
-            }
-            ImpactMaterial::TwoBodies(b) => {
+            Target::TwoBodies(b) => {
                 body(&mut out, b.a());
                 body(&mut out, b.b());
             }

@@ -18,46 +18,36 @@
 //! it ([`TwoBodies::rebound_velocities`]).
 
 use crate::error::{Error, Result};
-use crate::model::material::{carson, GeneralMaterial, Material, Prony};
+use crate::model::material::{carson, Material, Prony};
 
 /// What a body is made of.
 #[derive(Debug, Clone, PartialEq)]
 pub enum BodyMaterial {
     /// No compliance (`1/G_eq = 0`).
     Rigid,
-    /// The paper's standard solid in shear with elastic bulk.
-    StandardSolid(Material),
-    /// General linear viscoelasticity in shear and bulk.
-    General(GeneralMaterial),
+    /// A linear-viscoelastic (or elastic) [`Material`], the standard solid among them.
+    Viscoelastic(Material),
 }
 
 impl BodyMaterial {
     /// The body's equivalent relaxation function `G_eq(t)` (SI), `None` when rigid.
     pub fn equivalent_relaxation(&self) -> Result<Option<Prony>> {
-        Ok(match self {
-            BodyMaterial::Rigid => None,
-            BodyMaterial::StandardSolid(m) => Some(m.equivalent_relaxation()),
-            BodyMaterial::General(m) => Some(m.equivalent_relaxation()?),
-        })
+        self.material()
+            .map(Material::equivalent_relaxation)
+            .transpose()
     }
 
-    /// The material as a general one (the standard solid as its one-term case), `None` when
-    /// rigid.
-    pub fn general(&self) -> Option<GeneralMaterial> {
+    /// The material, `None` when rigid.
+    pub fn material(&self) -> Option<&Material> {
         match self {
             BodyMaterial::Rigid => None,
-            BodyMaterial::StandardSolid(m) => Some(m.general()),
-            BodyMaterial::General(m) => Some(m.clone()),
+            BodyMaterial::Viscoelastic(m) => Some(m),
         }
     }
 
     /// Relaxed shear modulus (Pa), `inf` when rigid.
     pub fn g_inf(&self) -> f64 {
-        match self {
-            BodyMaterial::Rigid => f64::INFINITY,
-            BodyMaterial::StandardSolid(m) => m.g_inf(),
-            BodyMaterial::General(m) => m.shear().g_inf(),
-        }
+        self.material().map_or(f64::INFINITY, Material::g_inf)
     }
 
     /// True for a rigid body.
@@ -76,8 +66,13 @@ pub struct Body {
 
 impl Body {
     /// A body of `mass` (kg, `0 < mass <= inf`) and `radius` (m, `0 < radius <= inf`; `inf`
-    /// for a flat wall). `name` ("A" or "B") goes into the errors.
+    /// for a flat wall). Errors name the field and are placed at the body ([`Error::In`],
+    /// `"body A"`).
     pub fn new(name: Side, mass: f64, radius: f64, material: BodyMaterial) -> Result<Self> {
+        Self::unplaced(mass, radius, material).map_err(|e| e.at(name.place()))
+    }
+
+    fn unplaced(mass: f64, radius: f64, material: BodyMaterial) -> Result<Self> {
         let check = |field, v: f64, allowed| {
             if v > 0.0 {
                 Ok(v)
@@ -90,12 +85,8 @@ impl Body {
             }
         };
         Ok(Self {
-            mass: check(name.field("mass"), mass, "0 < mass <= inf (kg)")?,
-            radius: check(
-                name.field("radius"),
-                radius,
-                "0 < radius <= inf (m; inf: a wall)",
-            )?,
+            mass: check("mass", mass, "0 < mass <= inf (kg)")?,
+            radius: check("radius", radius, "0 < radius <= inf (m; inf: a wall)")?,
             material,
         })
     }
@@ -108,18 +99,21 @@ impl Body {
         radius: f64,
         material: BodyMaterial,
     ) -> Result<Self> {
+        let place = |e: Error| e.at(name.place());
         crate::error::check(
-            name.field("density"),
+            "density",
             density,
             density > 0.0,
             "0 < density < inf (kg/m^3)",
-        )?;
+        )
+        .map_err(place)?;
         crate::error::check(
-            name.field("radius"),
+            "radius",
             radius,
             radius > 0.0,
             "0 < radius < inf (m) with a density (a wall needs mass = inf)",
-        )?;
+        )
+        .map_err(place)?;
         let mass = 4.0 / 3.0 * std::f64::consts::PI * radius.powi(3) * density;
         Self::new(name, mass, radius, material)
     }
@@ -148,17 +142,11 @@ pub enum Side {
 }
 
 impl Side {
-    /// The full field name used in errors (static, as [`Error`] keeps it).
-    pub fn field(self, field: &str) -> &'static str {
-        match (self, field) {
-            (Side::A, "mass") => "body A mass",
-            (Side::A, "radius") => "body A radius",
-            (Side::A, "density") => "body A density",
-            (Side::A, _) => "body A",
-            (Side::B, "mass") => "body B mass",
-            (Side::B, "radius") => "body B radius",
-            (Side::B, "density") => "body B density",
-            (Side::B, _) => "body B",
+    /// Where an error about this body arose, for [`Error::In`]: `"body A"`, `"body B"`.
+    pub fn place(self) -> &'static str {
+        match self {
+            Side::A => "body A",
+            Side::B => "body B",
         }
     }
 }
@@ -182,24 +170,23 @@ pub struct TwoBodies {
 }
 
 impl TwoBodies {
-    /// Bodies A and B. Refused: both rigid (no compliance: the impact is instantaneous), both of
+    /// Bodies A and B. Refused ([`Error::InvalidBodies`]): both rigid (no compliance: the impact is instantaneous), both of
     /// infinite mass (nothing moves), both of infinite radius (two walls: no Hertz contact).
     pub fn new(a: Body, b: Body) -> Result<Self> {
         if a.material.is_rigid() && b.material.is_rigid() {
-            return Err(Error::Scene(
-                "[[body]]: both bodies are rigid; at least one must deform".into(),
-            ));
+            return Err(Error::InvalidBodies {
+                reason: "both bodies are rigid; at least one must deform",
+            });
         }
         if a.mass.is_infinite() && b.mass.is_infinite() {
-            return Err(Error::Scene(
-                "[[body]]: both masses are infinite; at least one body must be free to move".into(),
-            ));
+            return Err(Error::InvalidBodies {
+                reason: "both masses are infinite; at least one body must be free to move",
+            });
         }
         if a.radius.is_infinite() && b.radius.is_infinite() {
-            return Err(Error::Scene(
-                "[[body]]: both radii are infinite (two walls); at least one body must be a sphere"
-                    .into(),
-            ));
+            return Err(Error::InvalidBodies {
+                reason: "both radii are infinite (two walls); at least one body must be a sphere",
+            });
         }
         let combined = match (
             a.material.equivalent_relaxation()?,
@@ -207,7 +194,7 @@ impl TwoBodies {
         ) {
             (Some(ga), Some(gb)) => carson::combine(&ga, &gb)?,
             (Some(g), None) | (None, Some(g)) => g,
-            (None, None) => unreachable!("both rigid refused above"),
+            (None, None) => return Err(Error::Internal("two rigid bodies passed the check")),
         };
         Ok(Self { a, b, combined })
     }
@@ -282,7 +269,7 @@ mod tests {
             (1.0, f64::INFINITY),
             (f64::INFINITY, 3.0),
         ] {
-            let a = Body::new(Side::A, ma, 1.0, BodyMaterial::StandardSolid(m)).unwrap();
+            let a = Body::new(Side::A, ma, 1.0, BodyMaterial::Viscoelastic(m.clone())).unwrap();
             let b = Body::new(Side::B, mb, 1.0, BodyMaterial::Rigid).unwrap();
             let two = TwoBodies::new(a, b).unwrap();
             let (va, vb) = two.rebound_velocities(2.0, 0.6);

@@ -1,6 +1,6 @@
 //! Hertz: closed forms of the elastic impact of a rigid sphere (docs/theory.md §6).
 //!
-//! With the effective modulus `E*` ([`crate::Material::effective_modulus`]):
+//! With the effective modulus `E*` ([`crate::StandardSolid::effective_modulus`]):
 //!
 //! ```text
 //! k = (4/3) E* sqrt(R),   F = k d^(3/2),   d_max = (5 m v0^2 / (4 k))^(2/5)

@@ -9,13 +9,14 @@
 //! length `L = (m v0^2 / (G_inf sqrt(R)))^(2/5)`, time `L / v0`, force `m v0^2 / L`,
 //! energy `m v0^2`, contact radius `sqrt(R L)`.
 //!
-//! The half-space is the standard solid of the paper or a general linear-viscoelastic solid
-//! ([`ImpactMaterial`]); for the latter `G_inf` is its relaxed shear modulus `g_inf`, and the
-//! dimensionless groups of Eq. (11) do not exist ([`Impact::groups`] is `None`).
+//! The target ([`Target`]) is a half-space of any [`Material`] or two colliding bodies; `G_inf` is
+//! the relaxed shear modulus `g_inf`, and the dimensionless groups of Eq. (11) exist for a
+//! half-space of the standard solid's shape only ([`Impact::groups`]).
 
 use crate::error::{check, Error, Result};
 use crate::model::bodies::TwoBodies;
-use crate::model::material::{Bulk, GeneralMaterial, Material, Prony};
+pub use crate::model::material::Groups;
+use crate::model::material::{Material, Prony, StandardSolid};
 
 /// A rigid sphere: mass `m` (kg) and radius `R` (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -42,58 +43,6 @@ impl Sphere {
     }
 }
 
-/// The dimensionless groups of Eq. (11): `p1 = nu`, `p2 = G_inf / G_1`,
-/// `p3 = eta (v0 R / (m^2 G_inf^3))^(1/5)`.
-///
-/// [`Groups::new`] takes user input and refuses every non-finite value (`inf`, `NaN`, `1e999`).
-/// The elastic limit is `p3 = 0` (`eta = 0`: Hertz with `G_inf`, `e = 1`). [`Impact::groups`]
-/// of an elastic material with `G_1 = 0` reports `p2 = inf`, which
-/// [`Groups::canonical_material`] maps back to `G_1 = 0`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Groups {
-    /// Static Poisson ratio, `-1 < nu <= 0.5` (`0.5`: incompressible).
-    pub nu: f64,
-    /// `G_inf / G_1`, `0 < p2 < inf` with `1/p2` finite (`inf` only from [`Impact::groups`]).
-    pub p2: f64,
-    /// Dimensionless viscosity, `0 <= p3 < inf` (`0`: elastic with `G_inf`, Hertz).
-    pub p3: f64,
-}
-
-impl Groups {
-    /// Validated groups: `-1 < nu <= 0.5`, `0 < p2 < inf` with `1/p2` finite, `0 <= p3 < inf`,
-    /// all finite; otherwise [`crate::Error::OutOfRange`] naming the group.
-    ///
-    /// ```
-    /// # use mdr_impact::{Error, Groups};
-    /// assert!(Groups::new(0.3, 1.0, 0.0).is_ok()); // elastic limit
-    /// assert!(matches!(
-    ///     Groups::new(0.3, f64::INFINITY, 1.0),
-    ///     Err(Error::OutOfRange { field: "p2", .. })
-    /// ));
-    /// ```
-    pub fn new(nu: f64, p2: f64, p3: f64) -> Result<Self> {
-        check("nu", nu, nu > -1.0 && nu <= 0.5, "-1 < nu <= 0.5")?;
-        check(
-            "p2",
-            p2,
-            p2 > 0.0 && (1.0 / p2).is_finite(),
-            "0 < p2 < inf with 1/p2 finite (elastic limit: p3 = 0)",
-        )?;
-        check("p3", p3, p3 >= 0.0, "0 <= p3 < inf (0: elastic)")?;
-        Ok(Self { nu, p2, p3 })
-    }
-
-    /// The material in canonical units (`G_inf = 1`, `G_1 = 1/p2`, `eta = p3`).
-    pub fn canonical_material(&self) -> Result<Material> {
-        let g_1 = if self.p2.is_infinite() {
-            0.0
-        } else {
-            1.0 / self.p2
-        };
-        Material::with_poisson(1.0, g_1, self.p3, self.nu)
-    }
-}
-
 /// Scales that map canonical results to SI (see the module docs).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Scales {
@@ -113,83 +62,70 @@ pub struct Scales {
     pub modulus: f64,
 }
 
-/// The half-space material of an [`Impact`]: the paper's standard solid, or a general
-/// linear-viscoelastic solid (Prony series in shear and bulk, docs/theory.md §8) of which the
-/// standard solid is the one-term case.
+/// What the sphere hits: a half-space of a [`Material`], or two colliding bodies whose contact is
+/// that of the effective sphere on a half-space of their combined compliance (docs/theory.md §8).
 #[derive(Debug, Clone, PartialEq)]
-pub enum ImpactMaterial {
-    /// Standard solid in shear with elastic bulk (paper Eqs. 1–3).
-    StandardSolid(Material),
-    /// General linear viscoelasticity in shear and bulk.
-    General(GeneralMaterial),
+pub enum Target {
+    /// A half-space of a linear-viscoelastic material (the standard solid among them).
+    HalfSpace(Material),
     /// Two colliding bodies (docs/theory.md §8): the half-space has their combined compliance
     /// and the sphere their effective mass and radius.
     TwoBodies(Box<TwoBodies>),
 }
 
-impl ImpactMaterial {
+impl Target {
     /// The modulus scale `G_inf` of the canonical units (Pa): the relaxed shear modulus
     /// `G(inf)`; for two bodies their relaxed shear moduli combined like compliances
     /// ([`TwoBodies::modulus_scale`]).
     pub fn g_inf(&self) -> f64 {
         match self {
-            ImpactMaterial::StandardSolid(m) => m.g_inf(),
-            ImpactMaterial::General(m) => m.shear().g_inf(),
-            ImpactMaterial::TwoBodies(b) => b.modulus_scale(),
+            Target::HalfSpace(m) => m.g_inf(),
+            Target::TwoBodies(b) => b.modulus_scale(),
         }
     }
 }
 
 /// A validated impact: sphere, impact velocity `v0` (m/s) and half-space material.
 ///
-/// The equivalent relaxation function `G_eq(t)` (SI) is computed once, at construction: the
-/// closed form of docs/theory.md §2 for the standard solid, the Carson-domain composition of
-/// [`GeneralMaterial::equivalent_relaxation`] for a general material.
+/// The equivalent relaxation function `G_eq(t)` (SI) is computed once, at construction, by
+/// [`Material::equivalent_relaxation`] (chosen by the material's shape).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Impact {
     sphere: Sphere,
     velocity: f64,
-    material: ImpactMaterial,
+    target: Target,
     /// `G_eq(t)` in SI (Pa, s).
     equivalent: Prony,
 }
 
 impl Impact {
-    /// Impact of `sphere` at speed `velocity` (m/s, `0 < v0 < inf`) on the standard solid
-    /// `material`.
-    pub fn new(sphere: Sphere, velocity: f64, material: Material) -> Result<Self> {
-        let equivalent = material.equivalent_relaxation();
-        Self::build(
-            sphere,
-            velocity,
-            ImpactMaterial::StandardSolid(material),
-            equivalent,
-        )
-    }
-
-    /// Impact of `sphere` at speed `velocity` (m/s, `0 < v0 < inf`) on a general
-    /// linear-viscoelastic `material`. Its `G_eq(t)` must stay a valid Prony series in canonical
-    /// units (finite, positive times and relaxed modulus), otherwise [`Error::NonFinite`] or
+    /// Impact of `sphere` at speed `velocity` (m/s, `0 < v0 < inf`) on a half-space of
+    /// `material`. Its `G_eq(t)` must stay a valid Prony series in canonical units (finite,
+    /// positive times and relaxed modulus), otherwise [`Error::NonFinite`] or
     /// [`Error::OutOfRange`].
     ///
     /// ```
     /// # use mdr_impact::{Impact, Material, Sphere};
+    /// # use mdr_impact::model::material::{BulkInput, ShearProny};
     /// let m = Material::with_poisson(1.0e6, 1.0e7, 500.0, 0.49).unwrap();
     /// let s = Sphere::new(4.11e-3, 5.0e-3).unwrap();
-    /// let general = Impact::with_general(s, 0.99, m.general()).unwrap();
-    /// assert!(general.groups().is_none()); // groups belong to the standard solid
     /// let standard = Impact::new(s, 0.99, m).unwrap();
-    /// let (a, b) = (general.canonical_relaxation(), standard.canonical_relaxation());
-    /// assert!((a.glassy() - b.glassy()).abs() < 1e-13 * b.glassy());
+    /// assert!(standard.groups().is_some());
+    /// // the same shape written as a one-term Prony series: the same groups
+    /// let shear = ShearProny::new(1.0e6, &[(1.0e7, 500.0 / 1.0e7)]).unwrap();
+    /// let series = Material::general(shear, BulkInput::Poisson(0.49)).unwrap();
+    /// let general = Impact::new(s, 0.99, series).unwrap();
+    /// let (a, b) = (general.groups().unwrap(), standard.groups().unwrap());
+    /// assert!((a.p3 - b.p3).abs() < 1e-15 * b.p3);
     /// ```
-    pub fn with_general(sphere: Sphere, velocity: f64, material: GeneralMaterial) -> Result<Self> {
+    pub fn new(sphere: Sphere, velocity: f64, material: Material) -> Result<Self> {
         let equivalent = material.equivalent_relaxation()?;
-        Self::build(
-            sphere,
-            velocity,
-            ImpactMaterial::General(material),
-            equivalent,
-        )
+        Self::build(sphere, velocity, Target::HalfSpace(material), equivalent)
+    }
+
+    /// The same as [`Impact::new`] (kept for callers that name a general material so).
+    pub fn with_general(sphere: Sphere, velocity: f64, material: Material) -> Result<Self> {
+        Self::new(sphere, velocity, material)
     }
 
     /// Collision of two bodies at the relative normal velocity `velocity` (m/s): a rigid sphere
@@ -202,7 +138,7 @@ impl Impact {
         Self::build(
             sphere,
             velocity,
-            ImpactMaterial::TwoBodies(Box::new(bodies)),
+            Target::TwoBodies(Box::new(bodies)),
             equivalent,
         )
     }
@@ -212,17 +148,12 @@ impl Impact {
         Self::build(
             self.sphere,
             velocity,
-            self.material.clone(),
+            self.target.clone(),
             self.equivalent.clone(),
         )
     }
 
-    fn build(
-        sphere: Sphere,
-        velocity: f64,
-        material: ImpactMaterial,
-        equivalent: Prony,
-    ) -> Result<Self> {
+    fn build(sphere: Sphere, velocity: f64, target: Target, equivalent: Prony) -> Result<Self> {
         let velocity = check(
             "velocity",
             velocity,
@@ -232,7 +163,7 @@ impl Impact {
         let imp = Self {
             sphere,
             velocity,
-            material,
+            target,
             equivalent,
         };
         // Extreme magnitudes can leave the f64 range when scaled; refuse them here, loudly.
@@ -285,33 +216,37 @@ impl Impact {
     pub fn velocity(&self) -> f64 {
         self.velocity
     }
-    /// The half-space material.
-    pub fn material(&self) -> &ImpactMaterial {
-        &self.material
+    /// What the sphere hits.
+    pub fn target(&self) -> &Target {
+        &self.target
     }
 
-    /// The standard solid, if the material is one (`None` for a general material, even a
-    /// one-term one: its `G_eq` comes from a different route, see [`Impact::with_general`]).
-    pub fn standard_solid(&self) -> Option<&Material> {
-        match &self.material {
-            ImpactMaterial::StandardSolid(m) => Some(m),
-            ImpactMaterial::General(_) | ImpactMaterial::TwoBodies(_) => None,
+    /// The half-space material, `None` for two bodies.
+    pub fn half_space(&self) -> Option<&Material> {
+        match &self.target {
+            Target::HalfSpace(m) => Some(m),
+            Target::TwoBodies(_) => None,
         }
     }
 
-    /// The general material, if the impact has one.
-    pub fn general_material(&self) -> Option<&GeneralMaterial> {
-        match &self.material {
-            ImpactMaterial::General(m) => Some(m),
-            ImpactMaterial::StandardSolid(_) | ImpactMaterial::TwoBodies(_) => None,
-        }
+    /// The half-space as a standard solid, if it has that shape
+    /// ([`Material::as_standard_solid`]); `None` for two bodies.
+    pub fn standard_solid(&self) -> Option<StandardSolid> {
+        self.half_space().and_then(Material::as_standard_solid)
+    }
+
+    /// The half-space material when it is not of the standard solid's shape (a general
+    /// material: more shear terms or a relaxing bulk); `None` otherwise and for two bodies.
+    pub fn general_material(&self) -> Option<&Material> {
+        self.half_space()
+            .filter(|m| m.as_standard_solid().is_none())
     }
 
     /// The two bodies, if the impact is a two-body collision.
     pub fn bodies(&self) -> Option<&TwoBodies> {
-        match &self.material {
-            ImpactMaterial::TwoBodies(b) => Some(b),
-            _ => None,
+        match &self.target {
+            Target::TwoBodies(b) => Some(b),
+            Target::HalfSpace(_) => None,
         }
     }
 
@@ -323,48 +258,31 @@ impl Impact {
     /// True when `G_eq(t)` is constant for `t > 0` (no decaying term): the Hertz closed form
     /// with the relaxed modulus is exact.
     pub fn is_elastic(&self) -> bool {
-        match &self.material {
-            ImpactMaterial::StandardSolid(m) => m.is_elastic(),
-            ImpactMaterial::General(_) | ImpactMaterial::TwoBodies(_) => {
-                self.equivalent.is_elastic()
-            }
+        match self.standard_solid() {
+            Some(m) => m.is_elastic(),
+            None => self.equivalent.is_elastic(),
         }
     }
 
     /// Plane-strain modulus `E* = 4 G_eq(inf)` (Pa) of the relaxed material (the Hertz limit).
     pub fn relaxed_effective_modulus(&self) -> f64 {
-        match &self.material {
-            ImpactMaterial::StandardSolid(m) => m.effective_modulus(m.g_inf()),
-            ImpactMaterial::General(_) | ImpactMaterial::TwoBodies(_) => {
-                4.0 * self.equivalent.relaxed
-            }
+        match self.standard_solid() {
+            Some(m) => m.effective_modulus(m.g_inf()),
+            None => 4.0 * self.equivalent.relaxed,
         }
     }
 
-    /// Dimensionless groups, Eq. (11), of a standard solid; `None` for a general material,
-    /// which has no such three groups.
+    /// Dimensionless groups, Eq. (11), of a half-space of the standard solid's shape
+    /// ([`StandardSolid::groups`]); `None` otherwise (a general material or two bodies have no
+    /// such three groups).
     pub fn groups(&self) -> Option<Groups> {
-        let ImpactMaterial::StandardSolid(m) = &self.material else {
-            return None;
-        };
-        let p2 = if m.g_1() == 0.0 {
-            f64::INFINITY
-        } else {
-            m.g_inf() / m.g_1()
-        };
-        // p3 = eta / (G_inf T) with T the time scale: algebraically Eq. (11), better conditioned.
-        let p3 = m.eta() / (m.g_inf() * self.scales().time);
-        let nu = match m.bulk() {
-            Bulk::Incompressible => 0.5,
-            Bulk::Modulus(_) => m.poisson(),
-        };
-        Some(Groups { nu, p2, p3 })
+        Some(self.standard_solid()?.groups(self.scales().time))
     }
 
     /// Scales from canonical units to SI.
     pub fn scales(&self) -> Scales {
         let (m, r, v) = (self.sphere.mass, self.sphere.radius, self.velocity);
-        let g = self.material.g_inf();
+        let g = self.target.g_inf();
         // L = (m v^2 / (G sqrt(R)))^(2/5), computed in logs to survive extreme magnitudes.
         let ln_l = 0.4 * (m.ln() + 2.0 * v.ln() - g.ln() - 0.5 * r.ln());
         let length = ln_l.exp();
@@ -471,11 +389,32 @@ pub struct Outcome {
     /// Name of the solver that produced it.
     pub solver: &'static str,
     /// Why `auto` did not answer with its first choice: the refusal of `fast` when `reference`
-    /// answered instead (`None` otherwise).
-    pub fallback: Option<String>,
+    /// answered instead (`None` otherwise), as the typed error.
+    pub fallback: Option<Box<Error>>,
 }
 
 impl Outcome {
+    /// The refusal of `fast` that made `auto` fall back ([`Outcome::fallback`]) as one line that
+    /// names `fast`: the message itself when its variant starts with the solver's name (every
+    /// accuracy, work and capability refusal does), else the message after `fast: `.
+    pub fn fallback_reason(&self) -> Option<String> {
+        let e = self.fallback.as_deref()?;
+        let named = matches!(
+            e.root(),
+            Error::AccuracyNotReached { .. }
+                | Error::NotAsymptotic { .. }
+                | Error::StepSizeTooSmall { .. }
+                | Error::WorkLimit { .. }
+                | Error::TooManyTerms { .. }
+                | Error::NotSupported { .. }
+        ) && !matches!(e, Error::In { .. });
+        Some(if named {
+            e.to_string()
+        } else {
+            format!("fast: {e}")
+        })
+    }
+
     /// Map a canonical outcome (`m = R = v0 = G_inf = 1`) to SI with the impact's scales.
     pub fn to_si(mut self, impact: &Impact) -> Outcome {
         let s = impact.scales();

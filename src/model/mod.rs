@@ -8,3 +8,4 @@ pub mod hertz;
 pub mod impact;
 pub mod material;
 pub mod tolerances;
+pub mod validity;

@@ -6,7 +6,7 @@
 use crate::error::Result;
 use crate::model::bodies::{Body, BodyMaterial, Side, TwoBodies};
 use crate::model::impact::{Groups, Impact, Sphere};
-use crate::model::material::{BulkProny, BulkRheology, GeneralMaterial, Material, ShearProny};
+use crate::model::material::{BulkInput, BulkProny, BulkRheology, Material, ShearProny};
 
 /// The regimes in which accuracy is reported.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -158,7 +158,7 @@ pub struct GeneralCase {
 
 impl GeneralCase {
     /// The material.
-    pub fn material(&self) -> Result<GeneralMaterial> {
+    pub fn material(&self) -> Result<Material> {
         let n = self.shear_terms;
         let taus: Vec<f64> = (0..n)
             .map(|i| {
@@ -179,17 +179,17 @@ impl GeneralCase {
             .collect();
         let shear = ShearProny::new(1.0, &terms)?;
         let bulk = match self.bulk {
-            None => BulkRheology::Incompressible,
+            None => BulkInput::Incompressible,
             Some((k_inf, kt)) => {
                 let kt: Vec<(f64, f64)> = kt.iter().copied().filter(|&(k, _)| k > 0.0).collect();
                 if kt.is_empty() {
-                    BulkRheology::Elastic(k_inf)
+                    BulkInput::Elastic(k_inf)
                 } else {
-                    BulkRheology::Prony(BulkProny::new(k_inf, &kt)?)
+                    BulkInput::Prony(BulkProny::new(k_inf, &kt)?)
                 }
             }
         };
-        GeneralMaterial::new(shear, bulk)
+        Material::general(shear, bulk)
     }
     /// The impact of the unit sphere at unit speed.
     pub fn impact(&self) -> Result<Impact> {
@@ -287,7 +287,7 @@ pub struct GeneralEntry {
     /// What it stands for.
     pub what: &'static str,
     /// The material.
-    pub material: GeneralMaterial,
+    pub material: Material,
     /// The impact.
     pub impact: Impact,
 }
@@ -357,7 +357,7 @@ impl TwoBodyCase {
 
 /// The default scene's elastomer as a body material.
 fn elastomer() -> Result<BodyMaterial> {
-    Ok(BodyMaterial::StandardSolid(Material::with_poisson(
+    Ok(BodyMaterial::Viscoelastic(Material::with_poisson(
         1.0e6, 1.0e7, 500.0, 0.49,
     )?))
 }
@@ -366,18 +366,18 @@ fn elastomer() -> Result<BodyMaterial> {
 fn polymer() -> Result<BodyMaterial> {
     let shear = ShearProny::new(5.0e6, &[(2.0e7, 1.0e-6), (3.0e7, 1.0e-5), (1.0e7, 1.0e-4)])?;
     let bulk = BulkProny::new(2.0e8, &[(1.0e8, 1.0e-5)])?;
-    Ok(BodyMaterial::General(GeneralMaterial::new(
+    Ok(BodyMaterial::Viscoelastic(Material::general(
         shear,
-        BulkRheology::Prony(bulk),
+        BulkInput::Prony(bulk),
     )?))
 }
 
 /// Elastic steel (E = 210 GPa, nu = 0.3) as a general material without terms.
 fn steel() -> Result<BodyMaterial> {
     let g = 210.0e9 / (2.0 * 1.3);
-    Ok(BodyMaterial::General(GeneralMaterial::new(
+    Ok(BodyMaterial::Viscoelastic(Material::general(
         ShearProny::new(g, &[])?,
-        BulkRheology::Poisson(0.3),
+        BulkInput::Poisson(0.3),
     )?))
 }
 
@@ -440,8 +440,8 @@ pub const TWO_BODIES: &[TwoBodyCase] = &[
             let a = Material::with_poisson(2.0e6, 2.0e7, 200.0, 0.3)?;
             let b = Material::with_poisson(1.0e6, 5.0e6, 5000.0, -0.5)?;
             pair(
-                Body::new(Side::A, 1.0e-3, 5.0e-3, BodyMaterial::StandardSolid(a))?,
-                Body::new(Side::B, 1.0e-2, 1.0e-2, BodyMaterial::StandardSolid(b))?,
+                Body::new(Side::A, 1.0e-3, 5.0e-3, BodyMaterial::Viscoelastic(a))?,
+                Body::new(Side::B, 1.0e-2, 1.0e-2, BodyMaterial::Viscoelastic(b))?,
                 3.0,
             )
         },

@@ -2,9 +2,8 @@
 //! [`Impact`] to a solver in canonical units and maps the outcome back to SI.
 
 use crate::error::{Error, Result};
-use crate::model::bodies::BodyMaterial;
-use crate::model::impact::{Impact, ImpactMaterial, Outcome};
-use crate::model::material::{ElementNetwork, GeneralNetwork, StackedNetwork};
+use crate::model::impact::{Impact, Outcome, Target};
+use crate::model::material::{ElementNetwork, GeneralNetwork, Material, StackedNetwork};
 use crate::model::tolerances;
 use crate::solvers::fast;
 use crate::solvers::mdr;
@@ -192,35 +191,27 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
 /// The one-line refusal of `mdr-euler` for two viscoelastic bodies.
 pub const MDR_EULER_GENERAL_UNSUPPORTED: &str = mdr::EULER_GENERAL_UNSUPPORTED;
 
-/// The impact's material in canonical units, in the forms the MDR schemes need: the standard
-/// solid's network of Eq. (8), or a general material's network built from `G` and `K`.
+/// The impact's material in canonical units, in the forms the MDR schemes need. The network is
+/// chosen by shape in this one place: a deformable material of the standard solid's shape
+/// (half-space, or the one deformable body beside a rigid one) gets the network of Eq. (8), which
+/// [`mdr::Scheme::Exponential`] integrates through the closed-form `G_eq`; any other material its
+/// network built from `G` and `K`; two deformable bodies their two networks in series.
 pub fn canonical_material(impact: &Impact) -> Result<mdr::CanonicalMaterial> {
     let s = impact.scales();
-    let network = match impact.material() {
-        ImpactMaterial::StandardSolid(m) => {
-            mdr::Network::StandardSolid(ElementNetwork::new(m).scaled(s.modulus, s.time))
-        }
-        ImpactMaterial::General(m) => {
-            mdr::Network::General(GeneralNetwork::new(m, s.modulus, s.time))
-        }
-        ImpactMaterial::TwoBodies(b) => {
-            let net = |m: &crate::model::bodies::BodyMaterial| {
-                m.general()
-                    .map(|g| GeneralNetwork::new(&g, s.modulus, s.time))
-            };
-            match (b.a().material(), b.b().material()) {
-                // one deformable standard solid: its own network, as for one body
-                (BodyMaterial::StandardSolid(m), BodyMaterial::Rigid)
-                | (BodyMaterial::Rigid, BodyMaterial::StandardSolid(m)) => {
-                    mdr::Network::StandardSolid(ElementNetwork::new(m).scaled(s.modulus, s.time))
-                }
-                (ma, mb) => match (net(ma), net(mb)) {
-                    (Some(na), Some(nb)) => mdr::Network::Stacked(StackedNetwork::new(na, nb)),
-                    (Some(n), None) | (None, Some(n)) => mdr::Network::General(n),
-                    (None, None) => unreachable!("TwoBodies refuses two rigid bodies"),
-                },
-            }
-        }
+    let one = |m: &Material| match m.as_standard_solid() {
+        Some(ss) => mdr::Network::StandardSolid(ElementNetwork::new(&ss).scaled(s.modulus, s.time)),
+        None => mdr::Network::General(GeneralNetwork::new(m, s.modulus, s.time)),
+    };
+    let network = match impact.target() {
+        Target::HalfSpace(m) => one(m),
+        Target::TwoBodies(b) => match (b.a().material().material(), b.b().material().material()) {
+            (Some(ma), Some(mb)) => mdr::Network::Stacked(StackedNetwork::new(
+                GeneralNetwork::new(ma, s.modulus, s.time),
+                GeneralNetwork::new(mb, s.modulus, s.time),
+            )),
+            (Some(m), None) | (None, Some(m)) => one(m),
+            (None, None) => return Err(Error::Internal("TwoBodies refuses two rigid bodies")),
+        },
     };
     Ok(mdr::CanonicalMaterial {
         prony: impact.canonical_relaxation(),
@@ -278,7 +269,7 @@ fn solve_canonical(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
                         .and_then(|p| theory::impact(&p, opts.rtol, opts.history));
                     match reference {
                         Ok(mut o) => {
-                            o.fallback = Some(first.to_string());
+                            o.fallback = Some(Box::new(first));
                             Ok(o)
                         }
                         Err(second) => Err(Error::NoSolver {
@@ -379,7 +370,7 @@ pub fn force_curve(
     times: &[f64],
     method: IndentMethod,
 ) -> Result<Vec<ForceCurveRow>> {
-    let prony = material.equivalent_relaxation();
+    let prony = material.equivalent_relaxation()?;
     let row = |t, d, a, force| ForceCurveRow { t, d, a, force };
     let rows: Vec<ForceCurveRow> = match method {
         IndentMethod::Theory => theory::response(&prony, radius, history, times)?

@@ -7,7 +7,7 @@
 
 use crate::error::{Error, Result};
 use crate::model::impact::{Impact, Sphere};
-use crate::model::material::{BulkRheology, GeneralMaterial, Material, ShearProny};
+use crate::model::material::{BulkInput, Material, ShearProny};
 
 /// Largest number of Prony terms of `prony:N`.
 pub const MAX_PRONY_TERMS: usize = 12;
@@ -235,11 +235,11 @@ impl Model {
                     (0..n).map(|i| (values[1 + i], self.taus[i])).collect();
                 let shear = ShearProny::new(values[0], &terms)?;
                 let bulk = match (self.k_0, nu) {
-                    (Some(k), _) => BulkRheology::Elastic(k),
-                    (None, Some(nu)) => BulkRheology::Poisson(nu),
+                    (Some(k), _) => BulkInput::Elastic(k),
+                    (None, Some(nu)) => BulkInput::Poisson(nu),
                     (None, None) => unreachable!("a model without k_0 has nu"),
                 };
-                Impact::with_general(sphere, v0, GeneralMaterial::new(shear, bulk)?)
+                Impact::new(sphere, v0, Material::general(shear, bulk)?)
             }
         }
     }

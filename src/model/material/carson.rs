@@ -46,8 +46,9 @@
 //! it agrees with the independent Talbot inversion `theory::bromwich` in the time domain to that
 //! route's own accuracy (`1e-11` worst, `1e-13` mean).
 
-use super::rheology::{BulkRheology, GeneralMaterial};
-use super::{Prony, PronyTerm};
+use super::prony::{Prony, PronyTerm};
+use super::rheology::BulkRheology;
+use super::Material;
 use crate::error::{Error, Result};
 
 /// Iteration cap of the pole finder (one zero of `D`); [`Error::NoConvergence`] beyond.
@@ -79,12 +80,11 @@ struct Pole {
 ///
 /// Terms are sorted by `T`, equal `T` (a zero of `D` closer to a pole than one ulp) merged.
 /// Errors: [`Error::NoConvergence`] if a zero of `D` is not found within [`POLE_MAX_ITER`].
-pub fn equivalent_relaxation(material: &GeneralMaterial) -> Result<Prony> {
+pub fn equivalent_relaxation(material: &Material) -> Result<Prony> {
     let shear = material.shear();
     let g_inf = shear.g_inf();
     let (k_inf, bulk_terms): (f64, &[(f64, f64)]) = match material.bulk() {
-        // (a GeneralMaterial never holds Poisson: the constructor resolves it)
-        BulkRheology::Incompressible | BulkRheology::Poisson(_) => {
+        BulkRheology::Incompressible => {
             return Ok(Prony {
                 relaxed: g_inf,
                 terms: shear
@@ -449,26 +449,4 @@ where
 fn bit_mid(a: f64, b: f64) -> f64 {
     let (ia, ib) = (a.to_bits(), b.to_bits());
     f64::from_bits(ia + (ib - ia) / 2)
-}
-
-impl GeneralMaterial {
-    /// The equivalent incompressible relaxation function `G_eq(t)` as an exact Prony series
-    /// (docs/theory.md §8), from the Carson-domain composition of this module.
-    ///
-    /// Errors only if a pole cannot be located within
-    /// [`POLE_MAX_ITER`] iterations ([`Error::NoConvergence`]).
-    ///
-    /// ```
-    /// # use mdr_impact::model::material::Material;
-    /// # use mdr_impact::model::material::rheology::GeneralMaterial;
-    /// let m = Material::with_poisson(1.0, 100.0, 1.0, 0.45).unwrap();
-    /// let g = GeneralMaterial::from(&m).equivalent_relaxation().unwrap();
-    /// let closed = m.equivalent_relaxation(); // docs/theory.md §2
-    /// for t in [0.0, 0.1, 1.0, 10.0] {
-    ///     assert!((g.eval(t) - closed.eval(t)).abs() < 1e-13 * closed.eval(t));
-    /// }
-    /// ```
-    pub fn equivalent_relaxation(&self) -> Result<Prony> {
-        equivalent_relaxation(self)
-    }
 }

@@ -35,7 +35,8 @@
 //! (incompressible: `du2 = du`, `F_end = A_s + B_s du`). The scheme is second order in `dt` and
 //! unconditionally stable (every factor is exact whatever `dt / tau`).
 
-use super::rheology::{BulkRheology, GeneralMaterial};
+use super::rheology::BulkRheology;
+use super::Material;
 
 /// Bulk branch of a [`GeneralNetwork`] (canonical units).
 #[derive(Debug, Clone, PartialEq)]
@@ -105,7 +106,7 @@ fn dphi(x: f64) -> f64 {
 impl GeneralNetwork {
     /// The network of `material` with moduli divided by `modulus` and times by `time` (the
     /// canonical units of an impact: `modulus = g_inf`, `time = L / v0`).
-    pub fn new(material: &GeneralMaterial, modulus: f64, time: f64) -> Self {
+    pub fn new(material: &Material, modulus: f64, time: f64) -> Self {
         let shear = material.shear();
         let bulk = match material.bulk() {
             BulkRheology::Incompressible => NetBulk::Incompressible,
@@ -115,8 +116,6 @@ impl GeneralNetwork {
                 k: p.terms().iter().map(|&(k, _)| k / modulus).collect(),
                 theta: p.terms().iter().map(|&(_, t)| t / time).collect(),
             },
-            // never stored by GeneralMaterial::new (resolved to Elastic or Incompressible)
-            BulkRheology::Poisson(_) => unreachable!("GeneralMaterial resolves a Poisson bulk"),
         };
         Self {
             g_inf: shear.g_inf() / modulus,
@@ -495,7 +494,7 @@ impl ElementModel for StackedNetwork {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::material::rheology::{BulkProny, ShearProny};
+    use crate::model::material::rheology::{BulkInput, BulkProny, ShearProny};
     use crate::model::material::{ElementNetwork, Material};
 
     /// Response `force / (4 dx)` to `u = H(t)`: a linear ramp over `eps`, then the geometric
@@ -532,9 +531,9 @@ mod tests {
             .collect()
     }
 
-    fn check_against_g_eq(m: &GeneralMaterial, tol: f64) -> f64 {
+    fn check_against_g_eq(m: &Material, tol: f64) -> f64 {
         let net = GeneralNetwork::new(m, 1.0, 1.0);
-        let g_eq = m.equivalent_relaxation().unwrap();
+        let g_eq = crate::model::material::carson::equivalent_relaxation(m).unwrap();
         let t_min = net.min_time();
         let t_max = g_eq.terms.iter().map(|p| p.tau).fold(t_min, f64::max);
         let (eps, n_per) = (1e-13 * t_min, 16_000);
@@ -576,10 +575,10 @@ mod tests {
     #[test]
     fn relaxes_like_g_eq() {
         let bulks = [
-            BulkRheology::Incompressible,
-            BulkRheology::Poisson(0.3),
-            BulkRheology::Poisson(0.49),
-            BulkRheology::Prony(
+            BulkInput::Incompressible,
+            BulkInput::Poisson(0.3),
+            BulkInput::Poisson(0.49),
+            BulkInput::Prony(
                 BulkProny::new(2.0, &[(50.0, 3e-3), (5.0, 0.7), (20.0, 40.0)]).unwrap(),
             ),
         ];
@@ -590,7 +589,7 @@ mod tests {
                 .flat_map(|(n, decades)| bulks.iter().map(move |b| (n, decades, b)))
                 .map(|(n, decades, b)| {
                     scope.spawn(move || {
-                        let m = GeneralMaterial::new(shear(n, decades), b.clone()).unwrap();
+                        let m = Material::general(shear(n, decades), b.clone()).unwrap();
                         let w = check_against_g_eq(&m, 1e-10);
                         eprintln!("{n} shear terms, {b:?}: network vs G_eq within {w:e}");
                         w
@@ -611,9 +610,10 @@ mod tests {
     fn one_term_is_the_standard_solid_network() {
         for nu in [0.5, 0.45, 0.3, -0.5] {
             let m = Material::with_poisson(1.0, 37.0, 2.5, nu).unwrap();
-            let old = ElementNetwork::new(&m);
-            let net = GeneralNetwork::new(&m.general(), 1.0, 1.0);
-            let (g_inf, g_1, tau) = (m.g_inf(), m.g_1(), m.tau());
+            let s = m.as_standard_solid().unwrap();
+            let old = ElementNetwork::new(&s);
+            let net = GeneralNetwork::new(&m, 1.0, 1.0);
+            let (g_inf, g_1, tau) = (s.g_inf(), s.g_1(), s.tau());
             for (u, w1, w3) in [
                 (1.0, 0.0, 0.0),
                 (0.7, 0.3, -0.2),
@@ -626,7 +626,7 @@ mod tests {
                 let (u2, force) = if net.is_incompressible() {
                     (u, g_inf * u + g_1 * (u - w3))
                 } else {
-                    let k = m.k_0();
+                    let k = s.k_0();
                     // g_inf u2 + g_1 (u2 - w3) = (k + g_inf/3)(u - u2) + g_1/3 (u - u2 - w1)
                     let c_b = k + g_inf / 3.0 + g_1 / 3.0;
                     let u2 = (c_b * u + g_1 * w3 - g_1 / 3.0 * w1) / (g_inf + g_1 + c_b);
@@ -657,11 +657,11 @@ mod tests {
     fn entry_stiffness_is_consistent() {
         let b = BulkProny::new(2.0, &[(50.0, 3e-3), (5.0, 0.7)]).unwrap();
         for bulk in [
-            BulkRheology::Incompressible,
-            BulkRheology::Poisson(0.3),
-            BulkRheology::Prony(b),
+            BulkInput::Incompressible,
+            BulkInput::Poisson(0.3),
+            BulkInput::Prony(b),
         ] {
-            let m = GeneralMaterial::new(shear(3, 3.0), bulk).unwrap();
+            let m = Material::general(shear(3, 3.0), bulk).unwrap();
             let net = GeneralNetwork::new(&m, 1.0, 1.0);
             let g0 = crate::model::material::rheology::equivalent_elastic(
                 m.shear().glassy(),

@@ -9,7 +9,7 @@
 //! ```
 //!
 //! The standard solid of the paper (Eq. 1, elastic bulk Eq. 2) is the one-term case
-//! `g_1 = G_1`, `tau_1 = eta / G_1`, see [`GeneralMaterial::from`] and [`Material::general`].
+//! `g_1 = G_1`, `tau_1 = eta / G_1` ([`Material::as_standard_solid`](super::Material::as_standard_solid)).
 //!
 //! Constructors validate and normalise: terms are sorted by increasing time, terms with equal
 //! times are merged (their moduli added) and terms whose modulus is zero (after merging) are
@@ -17,7 +17,6 @@
 //! [`Error::PronyTerm`] (field, input index, value); `g_inf <= 0`, `k_inf <= 0`, `K_0 <= 0` and
 //! a Poisson ratio outside `(-1, 0.5]` with [`Error::OutOfRange`].
 
-use super::{Bulk, Material};
 use crate::error::{check, Error, Result};
 
 /// Shear relaxation `G(t) = g_inf + sum_i g_i exp(-t / tau_i)` (docs/theory.md §8), validated.
@@ -51,6 +50,16 @@ impl ShearProny {
     /// Elastic shear, `G(t) = g_inf` (Pa), `0 < g_inf < inf`.
     pub fn elastic(g_inf: f64) -> Result<Self> {
         Self::new(g_inf, &[])
+    }
+
+    /// The shear of a standard solid as its constructors store it: no term when elastic, else
+    /// `(g_1, tau)`; `g_inf`, `g_1`, `tau` checked by the caller (`tau` may be `inf` there, as
+    /// for `Material::new` with a vanishing `G_1`).
+    pub(super) fn standard(g_inf: f64, term: Option<(f64, f64)>) -> Self {
+        Self {
+            g_inf,
+            terms: term.into_iter().collect(),
+        }
     }
 
     /// Relaxed (static) shear modulus `G(inf) = g_inf` (Pa).
@@ -134,54 +143,50 @@ impl BulkProny {
     }
 }
 
-/// Bulk behaviour of a [`GeneralMaterial`].
+/// The bulk as written: incompressible, an elastic modulus, a static Poisson ratio or a Prony
+/// series. [`Material::general`](super::Material::general) resolves it into a [`BulkRheology`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum BulkInput {
+    /// `K = inf` (static Poisson ratio 0.5).
+    Incompressible,
+    /// Elastic bulk modulus `K_0` in Pa, `0 < K_0 < inf`.
+    Elastic(f64),
+    /// Static Poisson ratio `nu`, `-1 < nu <= 0.5`, resolved into the elastic bulk
+    /// `K_0 = 2 g_inf (1 + nu) / (3 (1 - 2 nu))` of paper Eq. (3) with the relaxed shear modulus
+    /// (or an incompressible bulk for `nu = 0.5`).
+    Poisson(f64),
+    /// Viscoelastic bulk, a [`BulkProny`].
+    Prony(BulkProny),
+}
+
+/// The resolved bulk of a [`Material`](super::Material) (a Poisson ratio is an input form only,
+/// [`BulkInput::Poisson`]).
 #[derive(Debug, Clone, PartialEq)]
 pub enum BulkRheology {
     /// `K = inf` (static Poisson ratio 0.5): then `G_eq = G`.
     Incompressible,
     /// Elastic bulk modulus `K_0` in Pa, `0 < K_0 < inf`.
     Elastic(f64),
-    /// Static Poisson ratio `nu`, `-1 < nu <= 0.5`, turned by [`GeneralMaterial::new`] into the
-    /// elastic bulk `K_0 = 2 g_inf (1 + nu) / (3 (1 - 2 nu))` of paper Eq. (3) with the relaxed
-    /// shear modulus (or [`BulkRheology::Incompressible`] for `nu = 0.5`).
-    Poisson(f64),
     /// Viscoelastic bulk, a [`BulkProny`].
     Prony(BulkProny),
 }
 
-/// A linear-viscoelastic solid: shear [`ShearProny`] and bulk [`BulkRheology`] (docs/theory.md §8).
-///
-/// After construction the bulk is never [`BulkRheology::Poisson`] (it is resolved to an elastic
-/// or incompressible bulk).
-#[derive(Debug, Clone, PartialEq)]
-pub struct GeneralMaterial {
-    shear: ShearProny,
-    bulk: BulkRheology,
-}
-
-impl GeneralMaterial {
-    /// Material from its shear series and bulk; checks `K_0` (`0 < K_0 < inf`, field `"k_0"`)
-    /// and the Poisson ratio (`-1 < nu <= 0.5` with a finite positive `K_0`, field `"nu"`).
-    ///
-    /// ```
-    /// # use mdr_impact::model::material::rheology::{BulkRheology, GeneralMaterial, ShearProny};
-    /// let shear = ShearProny::new(1.0, &[(99.0, 1.0)]).unwrap();
-    /// let m = GeneralMaterial::new(shear, BulkRheology::Poisson(0.3)).unwrap();
-    /// // K_0 = 2 (1 + nu) / (3 (1 - 2 nu)) = 2.6 / 1.2 with g_inf = 1 (paper Eq. 3)
-    /// let BulkRheology::Elastic(k) = m.bulk() else { panic!() };
-    /// assert!((k - 2.6 / 1.2).abs() < 1e-15 * k);
-    /// ```
-    pub fn new(shear: ShearProny, bulk: BulkRheology) -> Result<Self> {
-        let bulk = match bulk {
-            BulkRheology::Elastic(k) => {
+impl BulkInput {
+    /// The resolved bulk for a shear series of relaxed modulus `g_inf` (Pa); checks `K_0`
+    /// (`0 < K_0 < inf`, field `"k_0"`) and the Poisson ratio (`-1 < nu <= 0.5` with a finite
+    /// positive `K_0`, field `"nu"`).
+    pub fn resolve(self, g_inf: f64) -> Result<BulkRheology> {
+        Ok(match self {
+            BulkInput::Incompressible => BulkRheology::Incompressible,
+            BulkInput::Elastic(k) => {
                 BulkRheology::Elastic(check("k_0", k, k > 0.0, "0 < k_0 < inf (Pa)")?)
             }
-            BulkRheology::Poisson(nu) => {
+            BulkInput::Poisson(nu) => {
                 check("nu", nu, nu > -1.0 && nu <= 0.5, "-1 < nu <= 0.5")?;
                 if nu == 0.5 {
                     BulkRheology::Incompressible
                 } else {
-                    let k = 2.0 * shear.g_inf * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu));
+                    let k = 2.0 * g_inf * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu));
                     if !(k.is_finite() && k > 0.0) {
                         return Err(Error::OutOfRange {
                             field: "nu",
@@ -193,87 +198,18 @@ impl GeneralMaterial {
                     BulkRheology::Elastic(k)
                 }
             }
-            b => b,
-        };
-        Ok(Self { shear, bulk })
-    }
-
-    /// The shear relaxation.
-    pub fn shear(&self) -> &ShearProny {
-        &self.shear
-    }
-
-    /// The bulk (never [`BulkRheology::Poisson`]).
-    pub fn bulk(&self) -> &BulkRheology {
-        &self.bulk
-    }
-
-    /// Relaxed bulk modulus `K(inf)` (Pa), `inf` when incompressible.
-    pub fn bulk_relaxed(&self) -> f64 {
-        match &self.bulk {
-            BulkRheology::Incompressible | BulkRheology::Poisson(_) => f64::INFINITY,
-            BulkRheology::Elastic(k) => *k,
-            BulkRheology::Prony(p) => p.k_inf,
-        }
-    }
-
-    /// Glassy bulk modulus `K(0)` (Pa), `inf` when incompressible.
-    pub fn bulk_glassy(&self) -> f64 {
-        match &self.bulk {
-            BulkRheology::Prony(p) => p.glassy(),
-            _ => self.bulk_relaxed(),
-        }
-    }
-
-    /// `K(t)` (Pa) at `t >= 0` (s), `inf` when incompressible.
-    pub fn bulk_relaxation(&self, t: f64) -> f64 {
-        match &self.bulk {
-            BulkRheology::Prony(p) => p.relaxation(t),
-            _ => self.bulk_relaxed(),
-        }
-    }
-
-    /// Relaxed equivalent modulus `G_eq(t -> inf) = G (3K + G) / (3K + 4G)` with the relaxed
-    /// `G = g_inf`, `K = k_inf` (Pa; docs/theory.md §2 and §8). Equals `g_inf` when incompressible.
-    pub fn equivalent_relaxed(&self) -> f64 {
-        equivalent_elastic(self.shear.g_inf, self.bulk_relaxed())
-    }
-
-    /// Glassy equivalent modulus `G_eq(0) = G_0 (3K_0 + G_0) / (3K_0 + 4G_0)` with the glassy
-    /// moduli `G_0 = G(0)`, `K_0 = K(0)` (Pa; docs/theory.md §2 and §8).
-    pub fn equivalent_glassy(&self) -> f64 {
-        equivalent_elastic(self.shear.glassy(), self.bulk_glassy())
+            BulkInput::Prony(p) => BulkRheology::Prony(p),
+        })
     }
 }
 
-impl From<&Material> for GeneralMaterial {
-    /// The standard solid as the one-term case: `g_inf = G_inf`, one term `(G_1, eta / G_1)`
-    /// (none when the material is elastic: `G_1 = 0` or `eta = 0`), bulk `K_0` or incompressible.
-    fn from(m: &Material) -> Self {
-        let terms = if m.is_elastic() {
-            Vec::new()
-        } else {
-            vec![(m.g_1(), m.tau())]
-        };
-        let bulk = match m.bulk() {
-            Bulk::Modulus(k) => BulkRheology::Elastic(k),
-            Bulk::Incompressible => BulkRheology::Incompressible,
-        };
-        Self {
-            shear: ShearProny {
-                g_inf: m.g_inf(),
-                terms,
-            },
-            bulk,
+impl From<BulkRheology> for BulkInput {
+    fn from(b: BulkRheology) -> Self {
+        match b {
+            BulkRheology::Incompressible => BulkInput::Incompressible,
+            BulkRheology::Elastic(k) => BulkInput::Elastic(k),
+            BulkRheology::Prony(p) => BulkInput::Prony(p),
         }
-    }
-}
-
-impl Material {
-    /// This standard solid as a [`GeneralMaterial`] (one shear term, elastic or incompressible
-    /// bulk); see [`GeneralMaterial::from`].
-    pub fn general(&self) -> GeneralMaterial {
-        GeneralMaterial::from(self)
     }
 }
 

@@ -35,10 +35,10 @@
 //! over 20 decades with `G_0 / G_inf ~ 1e5` (mean `1e-13`), and grows again beyond `N = 30`.
 //!
 //! Nothing here shares code with the MDR solvers or with `material::carson`; only the material
-//! definition ([`GeneralMaterial`]) is common.
+//! definition ([`Material`]) is common.
 
 use crate::error::{check, Error, Result};
-use crate::model::material::rheology::{BulkRheology, GeneralMaterial};
+use crate::model::material::{BulkRheology, Material};
 use nalgebra::Complex;
 
 /// Nodes of the Talbot rule (the full contour; half of them are evaluated thanks to conjugate
@@ -60,16 +60,16 @@ const NU: f64 = 0.2645;
 /// # use mdr_impact::model::material::Material;
 /// # use mdr_impact::solvers::theory::bromwich::equivalent_relaxation_at;
 /// let m = Material::with_poisson(1.0, 100.0, 1.0, 0.45).unwrap();
-/// let closed = m.equivalent_relaxation(); // docs/theory.md §2
-/// let g = equivalent_relaxation_at(&m.general(), 0.3).unwrap();
+/// let closed = m.equivalent_relaxation().unwrap(); // docs/theory.md §2
+/// let g = equivalent_relaxation_at(&m, 0.3).unwrap();
 /// assert!((g - closed.eval(0.3)).abs() < 1e-12 * closed.eval(0.3));
 /// ```
-pub fn equivalent_relaxation_at(material: &GeneralMaterial, t: f64) -> Result<f64> {
+pub fn equivalent_relaxation_at(material: &Material, t: f64) -> Result<f64> {
     equivalent_relaxation_with(material, t, TALBOT_NODES)
 }
 
 /// As [`equivalent_relaxation_at`] with `nodes` Talbot nodes (even, `>= 2`).
-pub fn equivalent_relaxation_with(material: &GeneralMaterial, t: f64, nodes: usize) -> Result<f64> {
+pub fn equivalent_relaxation_with(material: &Material, t: f64, nodes: usize) -> Result<f64> {
     let t = check("t", t, t >= 0.0, "0 <= t < inf (s)")?;
     if nodes < 2 || !nodes.is_multiple_of(2) {
         return Err(Error::OutOfRange {
@@ -105,11 +105,11 @@ pub fn equivalent_relaxation_with(material: &GeneralMaterial, t: f64, nodes: usi
 }
 
 /// The Carson transform `G_eq(s) = G (3K + G) / (3K + 4G)` at complex `s` (Pa).
-pub fn carson(material: &GeneralMaterial, s: Complex<f64>) -> Complex<f64> {
+pub fn carson(material: &Material, s: Complex<f64>) -> Complex<f64> {
     let shear = material.shear();
     let g = term_sum(shear.g_inf(), shear.terms(), s);
     let k = match material.bulk() {
-        BulkRheology::Incompressible | BulkRheology::Poisson(_) => return g,
+        BulkRheology::Incompressible => return g,
         BulkRheology::Elastic(k) => Complex::new(*k, 0.0),
         BulkRheology::Prony(p) => term_sum(p.k_inf(), p.terms(), s),
     };
@@ -127,11 +127,11 @@ fn term_sum(relaxed: f64, terms: &[(f64, f64)], s: Complex<f64>) -> Complex<f64>
 }
 
 /// Glassy `G_eq(0)` from the glassy moduli (`s -> inf`).
-fn glassy(material: &GeneralMaterial) -> f64 {
+fn glassy(material: &Material) -> f64 {
     let shear = material.shear();
     let g0 = shear.g_inf() + shear.terms().iter().map(|&(g, _)| g).sum::<f64>();
     let k0 = match material.bulk() {
-        BulkRheology::Incompressible | BulkRheology::Poisson(_) => return g0,
+        BulkRheology::Incompressible => return g0,
         BulkRheology::Elastic(k) => *k,
         BulkRheology::Prony(p) => p.k_inf() + p.terms().iter().map(|&(k, _)| k).sum::<f64>(),
     };
@@ -146,9 +146,9 @@ mod tests {
     /// One Maxwell term, incompressible: G_eq(t) = 1 + exp(-t) exactly.
     #[test]
     fn single_exponential() {
-        let m = GeneralMaterial::new(
+        let m = Material::general(
             ShearProny::new(1.0, &[(1.0, 1.0)]).unwrap(),
-            BulkRheology::Incompressible,
+            crate::model::material::BulkInput::Incompressible,
         )
         .unwrap();
         for t in [1e-3f64, 0.1, 1.0, 5.0, 30.0, 1e3] {

@@ -156,7 +156,7 @@ pub fn generate_reference(dir: &Path) -> Result<Written> {
     let mut files = Vec::new();
     for case in cases() {
         let g = case.groups;
-        let prony = g.canonical_material()?.equivalent_relaxation();
+        let prony = g.canonical_material()?.equivalent_relaxation()?;
         let tau_min = prony.min_tau();
         let common = format!(
             "case = \"{}\"\nregime = \"{}\"\nnu = {}\np2 = {}\np3 = {}\ntau_min = {}\n\

@@ -37,7 +37,7 @@
 use roots::{find_root_brent, Convergency};
 
 use crate::error::{Error, Result};
-use crate::model::material::{BulkRheology, GeneralMaterial, Prony, PronyTerm};
+use crate::model::material::{BulkRheology, Material, Prony, PronyTerm};
 
 /// Iteration cap of one root search (Brent's method on a bracket of at most 1500 e-folds
 /// converges in far fewer); [`Error::NoConvergence`] beyond.
@@ -273,7 +273,7 @@ fn combine(pair: &Pair, c: Combination, relaxed: f64) -> Result<Prony> {
 }
 
 /// `G_eq(t)` of a general material (Pa, s), by roots in the time domain (module docs).
-pub fn equivalent_relaxation(material: &GeneralMaterial) -> Result<Prony> {
+pub fn equivalent_relaxation(material: &Material) -> Result<Prony> {
     let shear = material.shear();
     let g_inf = shear.g_inf();
     let (k_inf, k_terms): (f64, &[(f64, f64)]) = match material.bulk() {
@@ -295,11 +295,6 @@ pub fn equivalent_relaxation(material: &GeneralMaterial) -> Result<Prony> {
         }
         BulkRheology::Elastic(k) => (*k, &[]),
         BulkRheology::Prony(p) => (p.k_inf(), p.terms()),
-        BulkRheology::Poisson(_) => {
-            return Err(Error::Unsupported(
-                "theory::poles: a Poisson bulk must be resolved by GeneralMaterial::new".into(),
-            ))
-        }
     };
     let relaxed = g_inf * (3.0 * k_inf + g_inf) / (3.0 * k_inf + 4.0 * g_inf);
     let pair = Pair::new(g_inf, shear.terms(), k_inf, k_terms);
@@ -318,28 +313,28 @@ pub fn series(a: &Prony, b: &Prony) -> Result<Prony> {
 }
 
 /// The relaxation function the reference solver integrates for `impact` (SI: Pa, s), derived
-/// without `material::carson`: the closed form of docs/theory.md §2 for a standard solid,
-/// [`equivalent_relaxation`] for a general material, and for two bodies each body's by the
-/// same rule combined by [`series`] (a rigid body drops out).
+/// without `material::carson`: the closed form of docs/theory.md §2 for a material of the
+/// standard solid's shape ([`Material::as_standard_solid`]), [`equivalent_relaxation`]
+/// otherwise, and for two bodies each body's by the same rule combined by [`series`] (a rigid
+/// body drops out).
 pub fn reference_relaxation(impact: &crate::Impact) -> Result<Prony> {
-    use crate::model::bodies::BodyMaterial;
-    use crate::ImpactMaterial;
-    let body = |m: &BodyMaterial| -> Result<Option<Prony>> {
-        Ok(match m {
-            BodyMaterial::Rigid => None,
-            BodyMaterial::StandardSolid(m) => Some(m.equivalent_relaxation()),
-            BodyMaterial::General(m) => Some(equivalent_relaxation(m)?),
-        })
+    let one = |m: &Material| -> Result<Prony> {
+        match m.as_standard_solid() {
+            Some(s) => Ok(s.equivalent_relaxation()),
+            None => equivalent_relaxation(m),
+        }
     };
-    match impact.material() {
-        ImpactMaterial::StandardSolid(m) => Ok(m.equivalent_relaxation()),
-        ImpactMaterial::General(m) => equivalent_relaxation(m),
-        ImpactMaterial::TwoBodies(b) => match (body(b.a().material())?, body(b.b().material())?) {
-            (Some(a), Some(b)) => series(&a, &b),
-            (Some(g), None) | (None, Some(g)) => Ok(g),
-            (None, None) => Err(Error::Unsupported(
-                "two rigid bodies have no relaxation function".into(),
-            )),
-        },
+    if let Some(m) = impact.half_space() {
+        return one(m);
+    }
+    let b = impact
+        .bodies()
+        .ok_or(Error::Internal("an impact is a half-space or two bodies"))?;
+    match (b.a().material().material(), b.b().material().material()) {
+        (Some(a), Some(b)) => series(&one(a)?, &one(b)?),
+        (Some(m), None) | (None, Some(m)) => one(m),
+        (None, None) => Err(Error::Internal(
+            "two rigid bodies have no relaxation function",
+        )),
     }
 }
