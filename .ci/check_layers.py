@@ -2,7 +2,7 @@
 """Fails when the crate's module graph has an import cycle.
 
 Reads every `crate::...` and `super::...` path in src/ (outside `#[cfg(test)]` modules and
-comments), maps it to the module it names, and looks for strongly connected components at the
+comments; the binary's main.rs and src/cli/ are skipped), maps it to the module it names, and looks for strongly connected components at the
 level of layers (depth 1: model, solvers, ...) and of modules (depth 2: model::material, ...).
 Usage (from the repository root): python3 .ci/check_layers.py [-v]
 """
@@ -18,8 +18,11 @@ def module_path(f):
     return tuple(p[:-1] if p[-1] in ("mod", "lib") else p)
 
 
+# main.rs and src/cli/ are the binary crate: they only use the library, never the reverse
+BINARY = os.path.join(ROOT, "cli")
 FILES = [os.path.join(d, f) for d, _, fs in os.walk(ROOT) for f in fs
-         if f.endswith(".rs") and f != "main.rs"]
+         if f.endswith(".rs") and f != "main.rs"
+         and os.path.commonpath([d, BINARY]) != BINARY]
 MODS = {module_path(f): f for f in FILES}
 PATH = r"((?:[a-z_][a-z0-9_]*::)*[a-z_][a-z0-9_]*)"
 

@@ -106,15 +106,16 @@ fn bad_input_is_one_line_and_nonzero() {
         ),
         "nu = 6e-1",
     );
-    assert_one_line_error(
-        &run(
-            &[
-                "cor", "--nu", "0.3", "--p2", "1", "--p3", "1", "--solver", "x",
-            ],
-            dir.path(),
-        ),
-        "solver: cannot read 'x'",
+    // a value outside a closed set is a usage error (exit 2) listing the values
+    let o = run(
+        &[
+            "cor", "--nu", "0.3", "--p2", "1", "--p3", "1", "--solver", "x",
+        ],
+        dir.path(),
     );
+    assert_eq!(o.status.code(), Some(2));
+    assert_one_line_error(&o, "invalid value 'x' for '--solver <SOLVER>'");
+    assert!(stderr(&o).contains("auto, mdr-euler, mdr, reference, fast"));
     assert_one_line_error(
         &run(
             &[
@@ -299,12 +300,12 @@ fn scene_resolution_and_empty_paths_refused() {
         (
             scene_without_outputs("elements = 200\nsteps = 2000")
                 .replace("name = \"auto\"", "name = \"fast\""),
-            "fast: [solver] elements/steps",
+            "not 'fast'",
         ),
         (
             scene_without_outputs("elements = 200\nsteps = 2000")
                 .replace("name = \"auto\"", "name = \"reference\""),
-            "reference: [solver] elements/steps",
+            "not 'reference'",
         ),
         (
             format!("{}[output]\nhistory = \"\"\n", scene_without_outputs("")),
@@ -479,4 +480,108 @@ fn polymer_scenes_run() {
         assert!(text.status.success());
         assert!(String::from_utf8_lossy(&text.stdout).contains("coefficient of restitution"));
     }
+}
+
+/// Closed sets of values are clap's: a typo exits with 2 on one line naming the flag and the
+/// accepted values.
+#[test]
+fn closed_sets_are_usage_errors_listing_the_values() {
+    let dir = tempfile::tempdir().unwrap();
+    let indent = [
+        "indent",
+        "--rate",
+        "0.3",
+        "--peak-time",
+        "1",
+        "--radius",
+        "1",
+        "--g-inf",
+        "1",
+        "--g1",
+        "100",
+        "--eta",
+        "1",
+        "--nu",
+        "0.45",
+    ];
+    for (args, needle, values) in [
+        (
+            &["--history", "sine"][..],
+            "'--history <HISTORY>'",
+            "triangle, half-sine",
+        ),
+        (
+            &["--history", "triangle", "--solver", "fem"][..],
+            "'--solver <SOLVER>'",
+            "theory, mdr",
+        ),
+    ] {
+        let all: Vec<&str> = indent.iter().chain(args).copied().collect();
+        let o = run(&all, dir.path());
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert_one_line_error(&o, needle);
+        assert!(stderr(&o).contains(values), "{}", stderr(&o));
+    }
+    let o = run(&["fit", "d.csv", "--model", "maxwell"], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert_one_line_error(&o, "'--model <MODEL>'");
+    let o = run(&["figures", "--solver", "fastest"], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert_one_line_error(&o, "'--solver <SOLVER>'");
+    // nothing was written
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+}
+
+/// Signed-number flags take a negative value and refuse it with a range message (exit 1).
+#[test]
+fn negative_numbers_get_a_range_message() {
+    let dir = tempfile::tempdir().unwrap();
+    for (args, needle) in [
+        (
+            &["bench", "--quick", "--budget", "-1", "--out", "b"][..],
+            "--budget = -1e0",
+        ),
+        (
+            &["fit-study", "--reps", "1", "--noise", "-1"][..],
+            "noise = -1e0",
+        ),
+    ] {
+        let o = run(args, dir.path());
+        assert_eq!(o.status.code(), Some(1), "{args:?}: {}", stderr(&o));
+        assert_one_line_error(&o, needle);
+    }
+}
+
+/// The indent defaults (history kinds, 101 times over [0, 2T]) come from the library.
+#[test]
+fn indent_default_times_grid() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = run(
+        &[
+            "indent",
+            "--history",
+            "half-sine",
+            "--rate",
+            "0.3",
+            "--peak-time",
+            "1",
+            "--radius",
+            "1",
+            "--g-inf",
+            "1",
+            "--g1",
+            "100",
+            "--eta",
+            "1",
+            "--nu",
+            "0.45",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout).unwrap();
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines[0], "t,d,a,force");
+    assert_eq!(lines.len(), 1 + mdr_impact::apps::indent::DEFAULT_TIMES);
+    assert!(lines[101].starts_with("2"), "{}", lines[101]);
 }

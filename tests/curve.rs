@@ -238,7 +238,12 @@ fn a_failing_velocity_fails_the_curve_naming_it() {
     };
     let range = VelocityRange::parse("0.5:1:2", false).unwrap();
     let e = curve::run(&scene.impact, &opts, &range, &no_progress).unwrap_err();
-    assert!(matches!(e, Error::Unsupported(_)));
+    // the solver's typed refusal, with the velocity as its place
+    assert!(matches!(e, Error::In { .. }));
+    assert!(!matches!(
+        e.root(),
+        Error::In { .. } | Error::Unsupported(_)
+    ));
     assert!(e.to_string().contains("v0 = 5e-1 m/s"), "{e}");
 }
 

@@ -434,7 +434,7 @@ fn cli_bad_input_is_one_line_and_writes_nothing() {
             args.extend([flag, value]);
         }
         let o = run(&args, dir.path());
-        assert_eq!(o.status.code(), Some(1), "{value}: {}", stderr(&o));
+        assert_eq!(o.status.code(), Some(2), "{value}: {}", stderr(&o));
         let e = stderr(&o);
         assert_eq!(e.trim_end().lines().count(), 1, "{e}");
         assert!(e.contains(flag) && e.contains(value), "{e}");

@@ -85,11 +85,13 @@ impl VelocityRange {
         } else {
             "MIN:MAX:N"
         };
-        let bad = |what: &str| {
-            Error::Unsupported(format!(
-                "{FIELD} = '{s}': {what}; expected {form} (m/s, 0 < MIN < MAX, 2 <= N <= \
-                 {MAX_VELOCITIES})"
-            ))
+        let bad = |what: &str| Error::Parse {
+            what: FIELD,
+            input: crate::error::escape_text(s),
+            expected: format!(
+                "{form} (m/s, 0 < MIN < MAX, 2 <= N <= {MAX_VELOCITIES}); {}",
+                crate::error::escape_text(what)
+            ),
         };
         let parts: Vec<&str> = s.split(':').map(str::trim).collect();
         let default_text = default_n.map(|n| n.to_string());
@@ -307,7 +309,7 @@ pub fn run_velocities(
                     max_force: o.max_force,
                     max_compression: o.max_indentation,
                 })
-                .map_err(|e| Error::Unsupported(format!("{FIELD}: at v0 = {v0:e} m/s: {e}")));
+                .map_err(|e| e.at(format!("{FIELD}: at v0 = {v0:e} m/s")));
             progress();
             row
         })

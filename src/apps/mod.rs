@@ -9,4 +9,5 @@ pub mod curve;
 pub mod dem;
 pub mod dma;
 pub mod fit;
+pub mod indent;
 pub mod sweep;

@@ -20,12 +20,11 @@
 
 use std::collections::BTreeMap;
 use std::fs::OpenOptions;
-use std::io::{IsTerminal, Read, Seek, SeekFrom};
+use std::io::{Read, Seek, SeekFrom};
 use std::path::Path;
 use std::sync::Mutex;
 use std::time::Instant;
 
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 
 use crate::error::{Error, Result};
@@ -113,11 +112,13 @@ impl LogRange {
     /// in errors. Requires finite `MIN <= MAX`, `1 <= N <= 100000`, and `N = 1` only if
     /// `MIN = MAX`.
     pub fn parse(field: &'static str, s: &str) -> Result<Self> {
-        let bad = |what: &str| {
-            Error::Unsupported(format!(
-                "{field} = '{s}': {what}; expected MIN:MAX:N (log10 values, MIN <= MAX, N >= 1), \
-                 MIN:MAX or a single value"
-            ))
+        let bad = |what: &str| Error::Parse {
+            what: field,
+            input: crate::error::escape_text(s),
+            expected: format!(
+                "MIN:MAX:N (log10 values, MIN <= MAX, N >= 1), MIN:MAX or a single value; {}",
+                crate::error::escape_text(what)
+            ),
         };
         let parts: Vec<&str> = s.split(':').map(str::trim).collect();
         let num = |t: &str| -> Result<f64> {
@@ -172,9 +173,10 @@ impl LogRange {
 
     /// The grid's `log10` values (exact at both ends); an error when `n` is missing.
     pub fn values(&self, field: &'static str) -> Result<Vec<f64>> {
-        let n = self
-            .n
-            .ok_or_else(|| Error::Unsupported(format!("{field} needs MIN:MAX:N for a grid")))?;
+        let n = self.n.ok_or_else(|| Error::NotSupported {
+            solver: field,
+            what: "a grid needs MIN:MAX:N (MIN:MAX is enough for --random only)".into(),
+        })?;
         if n == 1 {
             return Ok(vec![self.min]);
         }
@@ -198,11 +200,10 @@ pub fn parse_nu_list(s: &str) -> Result<Vec<f64>> {
     for t in s.split(',').map(str::trim) {
         let v = match t {
             "inc" | "incompressible" => 0.5,
-            _ => t.parse::<f64>().map_err(|_| {
-                Error::Unsupported(format!(
-                    "nu = '{t}' is not a number (expected a comma-separated list of numbers in \
-                     (-1, 0.5] or 'inc')"
-                ))
+            _ => t.parse::<f64>().map_err(|_| Error::Parse {
+                what: "nu",
+                input: crate::error::escape_text(t),
+                expected: "a comma-separated list of numbers in (-1, 0.5] or 'inc'".into(),
             })?,
         };
         if !(v > -1.0 && v <= 0.5) {
@@ -213,7 +214,11 @@ pub fn parse_nu_list(s: &str) -> Result<Vec<f64>> {
             });
         }
         if out.contains(&v) {
-            return Err(Error::Unsupported(format!("nu = {v} is listed twice")));
+            return Err(Error::Parse {
+                what: "nu",
+                input: crate::error::escape_text(s),
+                expected: format!("each value once ({v} is listed twice)"),
+            });
         }
         out.push(v);
     }
@@ -278,7 +283,11 @@ impl Plan {
     /// The numbered points of the plan (deterministic for a given plan and seed).
     pub fn points(&self) -> Result<Vec<Point>> {
         if self.nu.is_empty() {
-            return Err(Error::Unsupported("nu: the list is empty".into()));
+            return Err(Error::Parse {
+                what: "nu",
+                input: String::new(),
+                expected: "at least one value".into(),
+            });
         }
         let mut pts = Vec::new();
         match self.sampling {
@@ -369,8 +378,6 @@ pub struct SweepOptions {
     /// With dimensional inputs, also solve every `check_every`-th point (`index % k == 0`) in
     /// canonical units and record the deviation; `0`: never.
     pub check_every: u64,
-    /// Show a progress bar on stderr (only when stderr is a terminal).
-    pub progress: bool,
     /// Keep the rows already in the output file and skip their points; `false`: start afresh.
     pub resume: bool,
 }
@@ -384,7 +391,6 @@ impl Default for SweepOptions {
             },
             dimensional: None,
             check_every: DEFAULT_CHECK_EVERY,
-            progress: false,
             resume: true,
         }
     }
@@ -564,7 +570,10 @@ pub fn solve_point(p: &Point, opts: &SweepOptions) -> Record {
         rec.cor_error_estimate = o.cor_error_estimate;
         rec.contact_time = Some(o.contact_time / sc.time);
         rec.max_indentation = Some(o.max_indentation / sc.length);
-        if opts.dimensional.is_some() && opts.check_every > 0 && p.index % opts.check_every == 0 {
+        if opts.dimensional.is_some()
+            && opts.check_every > 0
+            && p.index.is_multiple_of(opts.check_every)
+        {
             let c = solve(&Impact::from_groups(g)?, &opts.solve)?;
             rec.cor_canonical = Some(c.cor);
             rec.scaling_dev = Some((o.cor - c.cor).abs() / c.cor.abs().max(f64::MIN_POSITIVE));
@@ -664,7 +673,9 @@ fn matches(path: &Path, r: &Record, p: &Point, opts: &SweepOptions) -> Result<()
     if same {
         Ok(())
     } else {
-        Err(Error::Unsupported(format!(
+        Err(Error::NotSupported {
+            solver: "sweep",
+            what: format!(
             "{}: row {} (nu = {}, log10 p2 = {}, log10 p3 = {}, solver {}, rtol {}, dimensional {}) \
              was made by a different sweep than the one asked for (nu = {}, log10 p2 = {}, \
              log10 p3 = {}, solver {}, rtol {}, dimensional {}); use another --out or start afresh",
@@ -682,18 +693,26 @@ fn matches(path: &Path, r: &Record, p: &Point, opts: &SweepOptions) -> Result<()
             opts.solve.solver.name(),
             opts.solve.rtol,
             opts.dimensional.is_some()
-        )))
+        ),
+        })
     }
 }
 
 /// Run a sweep over `points`, appending rows to `out` (see the module docs for resume).
 /// Returns the summary; the rows are in the file (read them with [`read_records`]).
-pub fn run(points: &[Point], out: &Path, opts: &SweepOptions) -> Result<Summary> {
+/// `tick` is called once per point (for a progress bar of `points.len()` units): at once for the
+/// points resumed from the file, after its solve for every other.
+pub fn run(
+    points: &[Point],
+    out: &Path,
+    opts: &SweepOptions,
+    tick: &(dyn Fn() + Sync),
+) -> Result<Summary> {
     opts.solve.validate()?;
     let t0 = Instant::now();
     let by_index: BTreeMap<u64, &Point> = points.iter().map(|p| (p.index, p)).collect();
     if by_index.len() != points.len() {
-        return Err(Error::Unsupported("sweep: duplicate point indices".into()));
+        return Err(Error::Internal("sweep: duplicate point indices"));
     }
     if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
@@ -712,15 +731,18 @@ pub fn run(points: &[Point], out: &Path, opts: &SweepOptions) -> Result<Summary>
             .map_err(|e| Error::io(out, e))?;
         let keep = complete_len(&bytes);
         for r in parse_records(out, &bytes[..keep])? {
-            let p = by_index.get(&r.point.index).ok_or_else(|| {
-                Error::Unsupported(format!(
+            let p = by_index
+                .get(&r.point.index)
+                .ok_or_else(|| Error::NotSupported {
+                    solver: "sweep",
+                    what: format!(
                     "{}: row index {} is not in the planned sweep of {} points; use another --out \
                      or start afresh",
                     out.display(),
                     r.point.index,
                     points.len()
-                ))
-            })?;
+                ),
+                })?;
             matches(out, &r, p, opts)?;
             done.insert(r.point.index, r);
         }
@@ -740,17 +762,9 @@ pub fn run(points: &[Point], out: &Path, opts: &SweepOptions) -> Result<Summary>
         .iter()
         .filter(|p| !done.contains_key(&p.index))
         .collect();
-    let bar = if opts.progress && std::io::stderr().is_terminal() {
-        ProgressBar::with_draw_target(Some(pending.len() as u64), ProgressDrawTarget::stderr())
-    } else {
-        ProgressBar::hidden()
-    };
-    if let Ok(style) = ProgressStyle::with_template(
-        "{msg} [{elapsed_precise}] {wide_bar} {pos}/{len} ({per_sec}, eta {eta})",
-    ) {
-        bar.set_style(style);
+    for _ in 0..done.len() {
+        tick();
     }
-    bar.set_message(out.display().to_string());
     let writer = Mutex::new(w);
     let new_rows: Mutex<Vec<Record>> = Mutex::new(Vec::with_capacity(pending.len()));
     pending.par_iter().try_for_each(|p| -> Result<()> {
@@ -758,7 +772,7 @@ pub fn run(points: &[Point], out: &Path, opts: &SweepOptions) -> Result<Summary>
         {
             let mut w = writer
                 .lock()
-                .map_err(|_| Error::Unsupported("sweep: writer lock poisoned".into()))?;
+                .map_err(|_| Error::Internal("sweep: writer lock poisoned"))?;
             w.write_record(rec.fields())
                 .map_err(|e| Error::io(out, e))?;
             w.flush().map_err(|e| Error::io(out, e))?;
@@ -766,10 +780,9 @@ pub fn run(points: &[Point], out: &Path, opts: &SweepOptions) -> Result<Summary>
         if let Ok(mut v) = new_rows.lock() {
             v.push(rec);
         }
-        bar.inc(1);
+        tick();
         Ok(())
     })?;
-    bar.finish_and_clear();
     drop(writer);
     let computed = pending.len();
     let resumed = done.len();

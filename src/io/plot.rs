@@ -47,10 +47,11 @@ pub fn line_chart_svg(
             }
         }
         if !(x0 < x1) {
-            return Err(Error::Unsupported(format!(
-                "{}: nothing to plot",
-                path.display()
-            )));
+            return Err(Error::NotSupported {
+                solver: "plot",
+                what: "nothing to plot (no finite x range)".into(),
+            }
+            .at(path.display().to_string()));
         }
         if !(y0 < y1) {
             y1 = y0 + 1.0;
@@ -151,10 +152,11 @@ pub fn cor_chart_svg(
     }
 
     if !(x0 < x1) {
-        return Err(Error::Unsupported(format!(
-            "{}: a curve needs at least two velocities",
-            path.display()
-        )));
+        return Err(Error::NotSupported {
+            solver: "plot",
+            what: "a curve needs at least two velocities".into(),
+        }
+        .at(path.display().to_string()));
     }
     let mut svg = String::new();
     {
@@ -188,10 +190,11 @@ pub fn cor_chart_svg(
 pub fn velocity_span(path: &Path, velocities: &[f64]) -> Result<(f64, f64)> {
     match (velocities.first(), velocities.last()) {
         (Some(a), Some(b)) if velocities.len() >= 2 => Ok((*a, *b)),
-        _ => Err(Error::Unsupported(format!(
-            "{}: a curve needs at least two velocities",
-            path.display()
-        ))),
+        _ => Err(Error::NotSupported {
+            solver: "plot",
+            what: "a curve needs at least two velocities".into(),
+        }
+        .at(path.display().to_string())),
     }
 }
 

@@ -321,9 +321,12 @@ pub fn general_entries() -> Result<Vec<GeneralEntry>> {
     }
     for case in POLYMERS {
         let impact = case.impact()?;
-        let material = impact.general_material().cloned().ok_or_else(|| {
-            crate::Error::Unsupported(format!("{}: not a general material", case.scene))
-        })?;
+        let material = impact
+            .general_material()
+            .cloned()
+            .ok_or(crate::Error::Internal(
+                "catalogue: a polymer that is not a general material",
+            ))?;
         out.push(GeneralEntry {
             id: case.id,
             what: case.what,

@@ -4,6 +4,9 @@
 
 pub mod bench;
 pub mod catalogue;
+pub mod external;
 pub mod figures;
+pub mod markdown;
+pub mod sections;
 pub mod stress;
 pub mod validate;

@@ -149,10 +149,12 @@ pub enum SolveResult {
     Panicked(String),
 }
 
-/// The variant name of an error.
+/// The variant name of an error (of the error it wraps, for [`Error::In`]): the category names
+/// of the stress section. Exhaustive, so a new variant must be named here.
 pub fn error_kind(e: &Error) -> &'static str {
     match e {
         Error::OutOfRange { .. } => "OutOfRange",
+        Error::PronyTerm { .. } => "PronyTerm",
         Error::UnstableStep { .. } => "UnstableStep",
         Error::WorkLimit { .. } => "WorkLimit",
         Error::NotAsymptotic { .. } => "NotAsymptotic",
@@ -161,9 +163,22 @@ pub fn error_kind(e: &Error) -> &'static str {
         Error::NoConvergence { .. } => "NoConvergence",
         Error::Quadrature { .. } => "Quadrature",
         Error::NonFinite { .. } => "NonFinite",
+        Error::Scene(_) => "Scene",
+        Error::Csv { .. } => "Csv",
         Error::NoSolver { .. } => "NoSolver",
+        Error::EmptyPath { .. } => "EmptyPath",
         Error::Unsupported(_) => "Unsupported",
-        _ => "other",
+        Error::Parse { .. } => "Parse",
+        Error::NotSupported { .. } => "NotSupported",
+        Error::TooManyTerms { .. } => "TooManyTerms",
+        Error::InvalidBodies { .. } => "InvalidBodies",
+        Error::In { source, .. } => error_kind(source),
+        Error::Internal(_) => "Internal",
+        Error::TooFewObservations { .. } => "TooFewObservations",
+        Error::ElasticData { .. } => "ElasticData",
+        Error::PartialNoise { .. } => "PartialNoise",
+        Error::FitFailed { .. } => "FitFailed",
+        Error::Io { .. } => "Io",
     }
 }
 
@@ -197,7 +212,7 @@ pub fn solve_one(row: &Row, solver: SolverKind, rtol: f64) -> SolveResult {
             message: e.to_string(),
         },
         Ok(Ok(o)) => {
-            let finite = o.cor.is_finite() && o.cor_error_estimate.map_or(true, f64::is_finite);
+            let finite = o.cor.is_finite() && o.cor_error_estimate.is_none_or(f64::is_finite);
             if finite {
                 SolveResult::Ok {
                     cor: o.cor,

@@ -112,7 +112,7 @@ impl LammpsVersion {
     }
 
     fn at_least(self, date: u32) -> bool {
-        self.0.map_or(true, |d| d >= date)
+        self.0.is_none_or(|d| d >= date)
     }
 
     /// True when `fix wall/gran` mixes the wall's modulus as `E / (2 (1 - nu))` (before

@@ -74,48 +74,6 @@ impl PronyOptions {
     }
 }
 
-/// The command-line arguments of `prony` (clap), for `main.rs`.
-#[derive(Debug, Clone, clap::Args)]
-pub struct PronyArgs {
-    /// The DMA data file.
-    pub data: PathBuf,
-    /// auto, or at most N terms.
-    #[arg(long, default_value = "auto")]
-    pub terms: String,
-    /// shear (G', G'') or tensile (E', E'', converted with --nu).
-    #[arg(long, default_value = "shear")]
-    pub modulus: String,
-    /// Poisson ratio (tensile conversion, default 0.5; bulk of material.toml).
-    #[arg(long, allow_hyphen_values = true)]
-    pub nu: Option<f64>,
-    /// Reference temperature (°C); default: the isotherm nearest 25 °C.
-    #[arg(long = "t-ref", allow_hyphen_values = true)]
-    pub t_ref: Option<f64>,
-    /// Shift law: wlf, arrhenius or none.
-    #[arg(long, default_value = "wlf")]
-    pub shift: String,
-    /// Output folder.
-    #[arg(long, default_value = "out")]
-    pub out: PathBuf,
-    /// Print one JSON object and nothing else on stdout.
-    #[arg(long)]
-    pub json: bool,
-}
-
-impl PronyArgs {
-    /// The validated options ([`Error::Parse`] naming a bad flag).
-    pub fn options(&self) -> Result<PronyOptions> {
-        Ok(PronyOptions {
-            data: self.data.clone(),
-            max_terms: parse_terms(&self.terms)?,
-            modulus: self.modulus.parse()?,
-            nu: self.nu,
-            t_ref: self.t_ref,
-            shift: self.shift.parse()?,
-        })
-    }
-}
-
 /// Parse `--terms`: `auto` or a count `N >= 1`.
 pub fn parse_terms(s: &str) -> Result<Option<usize>> {
     match s {

@@ -122,7 +122,7 @@ pub fn pairwise_shift(a: &LogIsotherm, b: &LogIsotherm) -> Option<PairShift> {
     for k in 0..=n {
         let d = lo + (hi - lo) * k as f64 / n.max(1) as f64;
         if let Some(m) = valid(d) {
-            if best.map_or(true, |(_, bm)| m < bm) {
+            if best.is_none_or(|(_, bm)| m < bm) {
                 best = Some((d, m));
             }
         }

@@ -30,9 +30,10 @@ impl Field {
                 });
             }
             if c.iter().any(|v| !v.is_finite()) || c.windows(2).any(|w| !(w[1] > w[0])) {
-                return Err(Error::Unsupported(format!(
-                    "field: {field} coordinates must be finite and strictly increasing"
-                )));
+                return Err(Error::NotSupported {
+                    solver: "field",
+                    what: format!("{field} coordinates must be finite and strictly increasing"),
+                });
             }
         }
         if z.len() != x.len() * y.len() {

@@ -50,63 +50,68 @@ pub const NUS: [f64; 5] = [0.0, 0.3, 0.45, 0.49, 0.5];
 /// `log10 p2` of Figs. 5 and 6.
 pub const LINE_LOG_P2: [f64; 2] = [-2.0, -3.0];
 
-/// Options of the `figures` command.
-#[derive(Debug, Clone, clap::Args)]
-pub struct FigureArgs {
+/// Options of the `figures` command (the CLI's flags of the same names).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FigureOptions {
     /// Output folder for the SVGs, CSVs and tables.md.
-    #[arg(long, default_value = "figures")]
     pub out: PathBuf,
-    /// Solver name (auto, mdr, ...).
-    #[arg(long, default_value = "auto")]
-    pub solver: String,
+    /// Solver of every CoR.
+    pub solver: SolverKind,
     /// Requested relative accuracy of each CoR.
-    #[arg(long, default_value_t = sweep::DEFAULT_SWEEP_RTOL)]
     pub rtol: f64,
     /// Grid values of log10 p2 over [-3, 1] in the maps (>= 3).
-    #[arg(long, default_value_t = 81)]
     pub n_p2: usize,
     /// Grid values of log10 p3 over [-2, 3] in the maps (>= 3).
-    #[arg(long, default_value_t = 101)]
     pub n_p3: usize,
     /// Values of log10 p3 over [-2, 3] on the curves of Figs. 5 and 6 (>= 3).
-    #[arg(long, default_value_t = 251)]
     pub n_line: usize,
     /// Canonical units instead of random dimensional inputs (the paper drew them at random).
-    #[arg(long)]
     pub canonical: bool,
     /// Seed of the random dimensional inputs.
-    #[arg(long, default_value_t = 2018)]
     pub seed: u64,
     /// Scaling check on every K-th point (dimensional inputs only; 0: never).
-    #[arg(long, value_name = "K", default_value_t = sweep::DEFAULT_CHECK_EVERY)]
     pub check_every: u64,
     /// Keep rows already in the data files (continue an interrupted run) instead of recomputing.
-    #[arg(long)]
     pub resume: bool,
     /// Also replace the generated block of this Markdown file (e.g. RESULTS.md) by the tables.
-    #[arg(long)]
     pub results: Option<PathBuf>,
-    /// Show progress bars (on a terminal only).
-    #[arg(long)]
-    pub progress: bool,
 }
 
-impl Default for FigureArgs {
+/// Default output folder of `figures`.
+pub const DEFAULT_OUT: &str = "figures";
+/// Default grid values of log10 p2 in the maps.
+pub const DEFAULT_N_P2: usize = 81;
+/// Default grid values of log10 p3 in the maps.
+pub const DEFAULT_N_P3: usize = 101;
+/// Default values of log10 p3 on the curves.
+pub const DEFAULT_N_LINE: usize = 251;
+/// Default seed of the random dimensional inputs (the paper's year).
+pub const DEFAULT_SEED: u64 = 2018;
+
+impl Default for FigureOptions {
     fn default() -> Self {
         Self {
-            out: PathBuf::from("figures"),
-            solver: "auto".into(),
+            out: PathBuf::from(DEFAULT_OUT),
+            solver: SolverKind::Auto,
             rtol: sweep::DEFAULT_SWEEP_RTOL,
-            n_p2: 81,
-            n_p3: 101,
-            n_line: 251,
+            n_p2: DEFAULT_N_P2,
+            n_p3: DEFAULT_N_P3,
+            n_line: DEFAULT_N_LINE,
             canonical: false,
-            seed: 2018,
+            seed: DEFAULT_SEED,
             check_every: sweep::DEFAULT_CHECK_EVERY,
             resume: false,
             results: None,
-            progress: false,
         }
+    }
+}
+
+impl FigureOptions {
+    /// Units of progress [`run`] reports: one per point of every sweep.
+    pub fn units(&self) -> u64 {
+        let maps = NUS.len() * self.n_p2 * self.n_p3;
+        let lines = NUS.len() * LINE_LOG_P2.len() * self.n_line;
+        (maps + lines) as u64
     }
 }
 
@@ -163,9 +168,10 @@ fn run_sweep(
     path: &Path,
     opts: &SweepOptions,
     runs: &mut Vec<DatasetRun>,
+    tick: &(dyn Fn() + Sync),
 ) -> Result<Vec<Record>> {
     let points = plan.points()?;
-    let summary = sweep::run(&points, path, opts)?;
+    let summary = sweep::run(&points, path, opts, tick)?;
     runs.push(DatasetRun {
         file: path.display().to_string(),
         summary,
@@ -173,12 +179,11 @@ fn run_sweep(
     let mut recs = sweep::read_records(path)?;
     recs.sort_by_key(|r| r.point.index);
     if recs.len() != points.len() {
-        return Err(Error::Unsupported(format!(
-            "{}: {} rows for {} planned points",
-            path.display(),
-            recs.len(),
-            points.len()
-        )));
+        return Err(Error::NotSupported {
+            solver: "figures",
+            what: format!("{} rows for {} planned points", recs.len(), points.len()),
+        }
+        .at(path.display().to_string()));
     }
     Ok(recs)
 }
@@ -187,14 +192,15 @@ fn cor(r: &Record) -> f64 {
     r.cor.unwrap_or(f64::NAN)
 }
 
-/// Regenerate every figure, its data and the tables; returns a report for the terminal.
-pub fn run(args: &FigureArgs) -> Result<String> {
+/// Regenerate every figure, its data and the tables; returns a report for the terminal. `tick`
+/// is called once per point of every sweep ([`FigureOptions::units`] in all).
+pub fn run(args: &FigureOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
     let t0 = Instant::now();
     check_n("n-p2", args.n_p2)?;
     check_n("n-p3", args.n_p3)?;
     check_n("n-line", args.n_line)?;
     let solve = SolveOptions {
-        solver: args.solver.parse::<SolverKind>()?,
+        solver: args.solver,
         rtol: args.rtol,
         ..Default::default()
     };
@@ -226,11 +232,10 @@ pub fn run(args: &FigureArgs) -> Result<String> {
             solve,
             dimensional: (!args.canonical).then_some(args.seed.wrapping_add(k as u64)),
             check_every: args.check_every,
-            progress: args.progress,
             resume: args.resume,
         };
         let path = data.join(format!("map_nu{}.csv", nu_tag(nu)));
-        let recs = run_sweep(&plan, &path, &opts, &mut runs)?;
+        let recs = run_sweep(&plan, &path, &opts, &mut runs, tick)?;
         let field = Field::new(x.clone(), y.clone(), recs.iter().map(cor).collect())?;
         maps.push(Map { nu, field });
     }
@@ -255,10 +260,9 @@ pub fn run(args: &FigureArgs) -> Result<String> {
         solve,
         dimensional: (!args.canonical).then_some(args.seed.wrapping_add(100)),
         check_every: args.check_every,
-        progress: args.progress,
         resume: args.resume,
     };
-    let line_recs = run_sweep(&plan, &data.join("lines.csv"), &opts, &mut runs)?;
+    let line_recs = run_sweep(&plan, &data.join("lines.csv"), &opts, &mut runs, tick)?;
     // curves[nu][p2] = e over line_x
     let curve = |nu: f64, lp2: f64| -> Vec<f64> {
         line_recs
@@ -272,7 +276,7 @@ pub fn run(args: &FigureArgs) -> Result<String> {
 
     let mut files = Vec::new();
     let map_of = |nu: f64| maps.iter().find(|m| m.nu == nu);
-    let inc = map_of(0.5).ok_or_else(|| Error::Unsupported("no incompressible map".into()))?;
+    let inc = map_of(0.5).ok_or(Error::Internal("figures: no incompressible map"))?;
     let xl = "log10 p3".to_string();
     let yl = "log10 p2 = log10 (G_inf / G_1)".to_string();
     // Figs. 3 and 4
@@ -280,7 +284,7 @@ pub fn run(args: &FigureArgs) -> Result<String> {
         (0.45, "fig3_cor_nu0.45", "Fig. 3"),
         (0.5, "fig4_cor_incompressible", "Fig. 4"),
     ] {
-        let m = map_of(nu).ok_or_else(|| Error::Unsupported(format!("no map for nu = {nu}")))?;
+        let m = map_of(nu).ok_or(Error::Internal("figures: no map of a figure's nu"))?;
         let title = if nu == 0.5 {
             format!("{fig}: CoR e, incompressible")
         } else {
@@ -330,7 +334,7 @@ pub fn run(args: &FigureArgs) -> Result<String> {
     }
     // relative error maps
     for nu in [0.45, 0.49] {
-        let m = map_of(nu).ok_or_else(|| Error::Unsupported(format!("no map for nu = {nu}")))?;
+        let m = map_of(nu).ok_or(Error::Internal("figures: no map of a figure's nu"))?;
         let rel = stats::relative_error(&m.field, &inc.field)?;
         let name = format!("relerr_nu{nu}");
         let svg = out.join(format!("{name}.svg"));
@@ -546,16 +550,18 @@ fn write_curves_csv(path: &Path, x: &[f64], curves: &[Curve]) -> Result<()> {
 pub fn splice_results(path: &Path, block: &str) -> Result<()> {
     let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
     let (Some(b), Some(e)) = (text.find(BEGIN_MARK), text.find(END_MARK)) else {
-        return Err(Error::Unsupported(format!(
-            "{}: markers '{BEGIN_MARK}' and '{END_MARK}' not found",
-            path.display()
-        )));
+        return Err(Error::NotSupported {
+            solver: "figures",
+            what: format!("markers '{BEGIN_MARK}' and '{END_MARK}' not found"),
+        }
+        .at(path.display().to_string()));
     };
     if e < b {
-        return Err(Error::Unsupported(format!(
-            "{}: end marker before begin marker",
-            path.display()
-        )));
+        return Err(Error::NotSupported {
+            solver: "figures",
+            what: "end marker before begin marker".into(),
+        }
+        .at(path.display().to_string()));
     }
     let new = format!(
         "{}{BEGIN_MARK}\n\n{}\n{}",

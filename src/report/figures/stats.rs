@@ -14,9 +14,10 @@ use crate::error::{Error, Result};
 /// `(e_inc - e) / e` on the grid of two maps (NaN where either is missing).
 pub fn relative_error(e: &Field, e_inc: &Field) -> Result<Field> {
     if e.x != e_inc.x || e.y != e_inc.y {
-        return Err(Error::Unsupported(
-            "relative error: the two maps are on different grids".into(),
-        ));
+        return Err(Error::NotSupported {
+            solver: "relative error",
+            what: "the two maps are on different grids".into(),
+        });
     }
     let z =
         e.z.iter()
@@ -172,7 +173,10 @@ pub fn tables(maps: &[Map], lines: &[LineData], s: &Setup) -> Result<String> {
     let inc = maps
         .iter()
         .find(|m| m.nu == 0.5)
-        .ok_or_else(|| Error::Unsupported("tables: no incompressible map".into()))?;
+        .ok_or(Error::NotSupported {
+            solver: "tables",
+            what: "no incompressible map".into(),
+        })?;
     let comp: Vec<&Map> = maps.iter().filter(|m| m.nu != 0.5).collect();
     let mut o = String::new();
     let w = &mut o;

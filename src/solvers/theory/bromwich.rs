@@ -71,7 +71,7 @@ pub fn equivalent_relaxation_at(material: &Material, t: f64) -> Result<f64> {
 /// As [`equivalent_relaxation_at`] with `nodes` Talbot nodes (even, `>= 2`).
 pub fn equivalent_relaxation_with(material: &Material, t: f64, nodes: usize) -> Result<f64> {
     let t = check("t", t, t >= 0.0, "0 <= t < inf (s)")?;
-    if nodes < 2 || nodes % 2 != 0 {
+    if nodes < 2 || !nodes.is_multiple_of(2) {
         return Err(Error::OutOfRange {
             field: "nodes",
             value: nodes as f64,

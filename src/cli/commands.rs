@@ -1,0 +1,389 @@
+//! One function per subcommand: it calls one library entry point and prints.
+
+use std::io::Write;
+use std::path::Path;
+
+use mdr_impact::apps::{batch, curve, dem, dma, fit, indent, sweep};
+use mdr_impact::error::escape_text;
+use mdr_impact::io::{output, plot, scene::Scene};
+use mdr_impact::report::{bench, figures, sections, stress, validate};
+use mdr_impact::{solve, Error, Groups, Impact, Material, SolveOptions};
+
+use super::args::*;
+use super::{progress_bar, with_progress, Failure, Outcome};
+
+/// Run one parsed command (none: `run` on the default scene).
+pub fn run(command: Option<Command>) -> Outcome {
+    let default = RunArgs {
+        scene: None,
+        json: false,
+    };
+    match command.unwrap_or(Command::Run(default)) {
+        Command::Run(a) => cmd_run(a),
+        Command::Curve(a) => cmd_curve(a),
+        Command::Dem(a) => cmd_dem(a),
+        Command::Cor(a) => cmd_cor(a),
+        Command::Indent(a) => cmd_indent(a),
+        Command::Validate(a) => cmd_validate(a),
+        Command::Bench(a) => cmd_bench(a),
+        Command::Stress(a) => cmd_stress(a),
+        Command::Reference(a) => cmd_reference(a),
+        Command::Sweep(a) => cmd_sweep(a),
+        Command::Fit(a) => cmd_fit(a),
+        Command::FitStudy(a) => cmd_fit_study(a),
+        Command::Prony(a) => cmd_prony(a),
+        Command::Figures(a) => cmd_figures(a),
+    }
+}
+
+/// Write `text` to stdout in one piece.
+fn stdout(text: &str) -> Outcome {
+    std::io::stdout()
+        .write_all(text.as_bytes())
+        .map_err(|e| Error::io("<stdout>", e).into())
+}
+
+/// The scene at `path`, or the embedded default.
+fn scene_or_default(path: Option<&Path>) -> Result<Scene, Error> {
+    path.map_or_else(|| Ok(Scene::default_scene()), Scene::load)
+}
+
+fn cmd_run(RunArgs { scene, json }: RunArgs) -> Outcome {
+    let scene = scene_or_default(scene.as_deref())?;
+    let outcome = solve(&scene.impact, &scene.options)?;
+    // with --json, stdout holds the JSON object alone; notes go to stderr
+    let note = |k: &str, v: &Path| match json {
+        true => eprintln!("{k:<28}{}", v.display()),
+        false => println!("{k:<28}{}", v.display()),
+    };
+    if let Some(h) = &outcome.history {
+        if let Some(p) = &scene.history_csv {
+            output::write_history_csv(p, h)?;
+        }
+        if let Some(p) = &scene.plot {
+            plot::force_history_svg(p, h, "Contact force")?;
+        }
+    }
+    if json {
+        println!("{}", output::impact_json(&scene.impact, &outcome));
+    } else {
+        print!("{}", output::summary(&scene.impact, &outcome));
+    }
+    if outcome.history.is_some() {
+        if let Some(p) = &scene.history_csv {
+            note("history written to", p);
+        }
+        if let Some(p) = &scene.plot {
+            note("force plot written to", p);
+        }
+    }
+    Ok(())
+}
+
+fn cmd_curve(
+    CurveArgs {
+        scene,
+        v0,
+        log,
+        out,
+    }: CurveArgs,
+) -> Outcome {
+    // the input is checked before the scene is read or anything solved
+    let range = curve::VelocityRange::parse(&v0, log)?;
+    let scene = scene_or_default(scene.as_deref())?;
+    let c = with_progress(range.n as u64, "curve", |tick| {
+        curve::run(&scene.impact, &scene.options, &range, tick)
+    })?;
+    let written = curve::write_outputs(&out, &c, log)?;
+    print!("{}", curve::summary(&c, Some(&written)));
+    Ok(())
+}
+
+fn cmd_dem(a: DemArgs) -> Outcome {
+    let format = a.format.with_lammps_version(a.lammps_version.as_deref())?;
+    let modulus = a.modulus.into();
+    // the input is checked before the scene is read or anything solved
+    let range = curve::VelocityRange::parse_optional_n(&a.v0, a.log, dem::DEFAULT_VELOCITIES)?;
+    let scene = scene_or_default(a.scene.as_deref())?;
+    let report = with_progress(range.n as u64, "dem", |tick| {
+        dem::run(&scene.impact, &scene.options, &range, modulus, tick)
+    })?;
+    let written = dem::write_outputs(&a.out, &report, format)?;
+    print!("{}", report.text(format));
+    if format == dem::Format::Json {
+        println!();
+    }
+    for w in &report.warnings {
+        eprintln!("warning: {w}");
+    }
+    for f in &written.files {
+        eprintln!("{:<28}{}", "written", f.display());
+    }
+    Ok(())
+}
+
+fn cmd_cor(a: CorArgs) -> Outcome {
+    let opts = SolveOptions {
+        solver: a.solver,
+        rtol: a.rtol,
+        ..Default::default()
+    };
+    opts.validate()?;
+    if let Some(path) = &a.input {
+        let input = batch::read_rows(path)?;
+        let file = path.display().to_string();
+        let outcomes = batch::solve_rows(&file, &input.rows, &opts)?;
+        let mut buf = Vec::new();
+        batch::write_results(&mut buf, &input.rows, &outcomes)?;
+        std::io::stdout()
+            .write_all(&buf)
+            .map_err(|e| Error::io("<stdout>", e))?;
+        // after success only, so that an error stays the one line on stderr
+        let skipped = &input.skipped_blank_lines;
+        if !skipped.is_empty() {
+            let s = if skipped.len() == 1 { "" } else { "s" };
+            let lines = batch::format_line_list(skipped);
+            eprintln!(
+                "note: {}: skipped blank line{s} {lines}",
+                escape_text(&file)
+            );
+        }
+        return Ok(());
+    }
+    // clap guarantees all three are present without --input
+    let g = |x: Option<f64>| x.unwrap_or(f64::NAN);
+    let (nu, p2, p3) = (g(a.groups.nu), g(a.groups.p2), g(a.groups.p3));
+    let impact = Impact::from_groups(Groups::new(nu, p2, p3)?)?;
+    let o = solve(&impact, &opts)?;
+    if let Some(why) = o.fallback_reason() {
+        eprintln!("note: answered by {} ({})", o.solver, escape_text(&why));
+    }
+    println!("{}", o.cor);
+    Ok(())
+}
+
+fn cmd_indent(a: IndentArgs) -> Outcome {
+    let material = Material::with_poisson(a.g_inf, a.g1, a.eta, a.nu)?;
+    let (kind, rate, peak, times) = (a.history, a.rate, a.peak_time, a.times.as_deref());
+    let rows = indent::run(
+        &material,
+        a.radius,
+        kind,
+        rate,
+        peak,
+        times,
+        a.solver.into(),
+    )?;
+    stdout(&indent::csv(&rows))
+}
+
+fn cmd_validate(
+    ValidateArgs {
+        out,
+        figures,
+        check,
+    }: ValidateArgs,
+) -> Outcome {
+    let (out, figures) = (out.as_path(), figures.as_path());
+    let units = validate::units();
+    if check {
+        let c = with_progress(units, "validate", |tick| validate::check(out, tick))?;
+        if let Some(t) = validate::per_regime(&c.fresh) {
+            println!("{t}");
+        }
+        if let validate::Staleness::Stale { line, .. } = c.staleness {
+            let report = out.to_path_buf();
+            return Err(Failure::Stale { report, line });
+        }
+        println!("{} is current", out.display());
+    } else {
+        let fresh = with_progress(units, "validate", |tick| {
+            validate::regenerate(out, figures, tick)
+        })?;
+        if let Some(t) = validate::per_regime(&fresh) {
+            println!("{t}");
+        }
+        println!("wrote {}", out.display());
+    }
+    Ok(())
+}
+
+fn cmd_bench(a: BenchArgs) -> Outcome {
+    let (out, report) = (a.out.as_path(), a.report.as_path());
+    let opts = &bench::BenchOptions {
+        quick: a.quick,
+        budget: a.budget,
+        batch_rows: a.batch_rows,
+    };
+    if !opts.quick {
+        // a missing report or markers fail before minutes of work
+        sections::require_section(report, &sections::PERFORMANCE)?;
+    }
+    let units = bench::full_units(opts)?;
+    let r = with_progress(units, "bench", |tick| bench::run_full(opts, tick))?;
+    r.write_files(out)?;
+    print!("{}", r.text());
+    if !opts.quick {
+        sections::update_section(report, &sections::PERFORMANCE, &r.section())?;
+        println!("performance section of {} updated", report.display());
+    }
+    Ok(())
+}
+
+fn cmd_stress(a: StressArgs) -> Outcome {
+    let (rows, seed, out, report) = (a.rows, a.seed, a.out.as_path(), a.report.as_path());
+    // a missing report or markers fail before minutes of work
+    sections::require_section(report, &sections::STRESS)?;
+    let r = with_progress(rows as u64, "stress", |tick| stress::run(rows, seed, tick));
+    let section = r.markdown();
+    print!("{section}");
+    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+    let csv = out.join("stress_outside.csv");
+    r.write_problems_csv(&csv)?;
+    sections::update_section(report, &sections::STRESS, &section)?;
+    let (n, path) = (r.problems.len(), csv.display());
+    println!(
+        "stress section of {} updated; {n} solves that broke the contract in {path}",
+        report.display()
+    );
+    match r.clean() {
+        true => Ok(()),
+        false => Err(Failure::ContractBroken { problems: n, csv }),
+    }
+}
+
+fn cmd_reference(a: ReferenceArgs) -> Outcome {
+    let written = mdr_impact::solvers::theory::generate_reference(&a.out)?;
+    let (n, manifest) = (written.files.len(), written.manifest.display());
+    println!("wrote {n} files and {manifest}");
+    Ok(())
+}
+
+fn cmd_sweep(a: SweepArgs) -> Outcome {
+    let plan = sweep::Plan {
+        nu: sweep::parse_nu_list(&a.nu)?,
+        log_p2: sweep::LogRange::parse("log-p2", &a.log_p2)?,
+        log_p3: sweep::LogRange::parse("log-p3", &a.log_p3)?,
+        sampling: match a.random {
+            Some(n) => sweep::Sampling::Random { n, seed: a.seed },
+            None => sweep::Sampling::Grid,
+        },
+    };
+    let opts = &sweep::SweepOptions {
+        solve: SolveOptions {
+            solver: a.solver,
+            rtol: a.rtol,
+            ..Default::default()
+        },
+        dimensional: a.dimensional.then_some(a.seed),
+        check_every: a.check_every,
+        resume: !a.fresh,
+    };
+    let out = a.out.as_path();
+    let points = plan.points()?;
+    let summary = with_progress(points.len() as u64, &out.display().to_string(), |tick| {
+        sweep::run(&points, out, opts, tick)
+    })?;
+    println!("{summary}");
+    println!("rows in {}", out.display());
+    Ok(())
+}
+
+fn cmd_fit(a: FitArgs) -> Outcome {
+    let (scene, kind, tau_range) = (a.scene.as_deref(), a.model, a.tau_range.as_deref());
+    let fixes = a
+        .fix
+        .iter()
+        .map(|f| f.parse::<fit::Fix>())
+        .collect::<Result<Vec<_>, _>>()?;
+    let name = scene.map_or("default scene".to_string(), |p| p.display().to_string());
+    let scene = scene_or_default(scene)?;
+    let sphere = fit::data::scene_sphere(&scene, &name)?;
+    let data = fit::data::read(&a.data, sphere, &name)?;
+    let taus = fit::prony_times(&kind, tau_range, &data)?;
+    let (model, fixed) = fit::setup_model(kind, &fixes, taus)?;
+    let result = fit::fit(&model, &data, &fixed)?;
+    let written = fit::report::write_outputs(&a.out, &result)?;
+    if a.json {
+        println!("{}", fit::report::json(&result));
+        eprintln!("material written to {}", written.toml.display());
+        eprintln!("plot written to {}", written.svg.display());
+    } else {
+        print!("{}", fit::report::summary(&result, Some(&written)));
+    }
+    Ok(())
+}
+
+fn cmd_fit_study(a: FitStudyArgs) -> Outcome {
+    let report = a.report.as_deref();
+    let config = |contact_times| fit::study::StudyConfig {
+        reps: a.reps,
+        seed: a.seed,
+        noise: a.noise,
+        velocities: a.velocities,
+        contact_times,
+    };
+    if let Some(p) = report {
+        sections::require_section(p, &sections::FIT_STUDY)?;
+    }
+    let mut reports = Vec::new();
+    let studies: &[bool] = if a.cor_only { &[false] } else { &[true, false] };
+    for &contact_times in studies {
+        let cfg = config(contact_times);
+        let r = with_progress(cfg.reps as u64, "fit-study", |tick| {
+            fit::study::run(&cfg, tick)
+        });
+        reports.push(r?);
+    }
+    let section = fit::study::markdown(&reports);
+    print!("{section}");
+    if let Some(p) = report {
+        sections::update_section(p, &sections::FIT_STUDY, &section)?;
+        println!("fit section of {} updated", p.display());
+    }
+    Ok(())
+}
+
+fn cmd_figures(args: FigureArgs) -> Outcome {
+    let opts = figures::FigureOptions {
+        out: args.out,
+        solver: args.solver,
+        rtol: args.rtol,
+        n_p2: args.n_p2,
+        n_p3: args.n_p3,
+        n_line: args.n_line,
+        canonical: args.canonical,
+        seed: args.seed,
+        check_every: args.check_every,
+        resume: args.resume,
+        results: args.results,
+    };
+    let bar = match args.progress {
+        true => progress_bar(opts.units(), "figures"),
+        false => indicatif::ProgressBar::hidden(),
+    };
+    let report = figures::run(&opts, &|| bar.inc(1));
+    bar.finish_and_clear();
+    print!("{}", report?);
+    Ok(())
+}
+
+fn cmd_prony(a: PronyArgs) -> Outcome {
+    let options = dma::PronyOptions {
+        data: a.data.clone(),
+        max_terms: dma::parse_terms(&a.terms)?,
+        modulus: a.modulus.into(),
+        nu: a.nu,
+        t_ref: a.t_ref,
+        shift: a.shift.into(),
+    };
+    let report = dma::run(&options)?;
+    dma::write_outputs(&a.out, &report)?;
+    if a.json {
+        println!("{}", dma::json(&report));
+    } else {
+        print!("{}", dma::summary(&report));
+        println!("{:<28}{}", "written", a.out.display());
+    }
+    Ok(())
+}

@@ -1,0 +1,278 @@
+//! The performance section of VALIDATION.md.
+
+use std::fmt::Write as _;
+
+use super::*;
+
+/// The performance section of VALIDATION.md (between the markers).
+pub fn summary(
+    points: &[BenchPoint],
+    machine: &str,
+    batch: Option<(usize, f64)>,
+    timed: &[(TimedRows, Vec<RowTiming>)],
+    general: &[GeneralTiming],
+) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "Measured by `mdr-impact bench` in one run on {machine}; times are medians over repeats \
+         of a CoR-only solve (no histories), errors are against the reference solver at rtol 1e-11 \
+         (outside the timed region). Data: [`validation/bench.csv`](validation/bench.csv); \
+         plot: `validation/work-precision.svg`. Machine-dependent, so not part of the staleness check. \
+         Re-run: `cargo run --release -- bench --batch-rows 100000` (under two minutes on this machine).\n"
+    );
+    let _ = writeln!(s, "![work-precision](validation/work-precision.svg)\n");
+    let _ = writeln!(
+        s,
+        "| solver | rtol | median time per impact (geometric mean over cases) | max CoR error | max force error / F_peak |\n| --- | --- | --- | --- | --- |"
+    );
+    for (solver, rtols) in sweep(false) {
+        for rtol in rtols {
+            match aggregate(points, solver, rtol) {
+                Some((t, e, f)) => {
+                    let _ = writeln!(
+                        s,
+                        "| {solver} | {rtol:.0e} | {} | {e:.1e} | {f:.1e} |",
+                        fmt_time(t)
+                    );
+                }
+                None => {
+                    let _ = writeln!(
+                        s,
+                        "| {solver} | {rtol:.0e} | refused (work limit) | - | - |"
+                    );
+                }
+            }
+        }
+    }
+    if let Some((euler, fast)) = cheapest_pair(points) {
+        let _ = writeln!(
+            s,
+            "\nAt equal accuracy (worst CoR error over the cases at most 1e-4, cheapest setting of each): \
+             `mdr-euler` {} against `fast` {}, a ratio of {:.0}.",
+            fmt_time(euler),
+            fmt_time(fast),
+            euler / fast
+        );
+    }
+    for (kind, rows) in timed {
+        let _ = writeln!(s, "\n{}\n", kind.intro(rows.len()));
+        s.push_str(&timing_table(rows, *kind));
+    }
+    if !general.is_empty() {
+        let random = random_rows_of(timed);
+        let _ = writeln!(
+            s,
+            "\n`fast` at rtol 1e-6 on the general materials of VALIDATION.md section 1c (one core, \
+             CoR only), each beside the standard solid of the random sample in the same CoR group; \
+             the ratio is of the median times:\n"
+        );
+        s.push_str(&general_timing_table(general, random));
+    }
+    if let Some((rows, secs)) = batch {
+        let _ = writeln!(
+            s,
+            "\n`mdr-impact cor --input` path (`batch::solve_rows`, default solver and rtol 1e-6, all cores): \
+             {rows} random rows of the paper's range in {secs:.2} s."
+        );
+    }
+    if !timed.is_empty() {
+        let random = random_rows_of(timed);
+        s.push('\n');
+        s.push_str(&targets(
+            timed,
+            speedup(points),
+            batch,
+            &general_targets(general, random),
+        ));
+    }
+    s
+}
+
+/// What `mdr-impact bench` runs: the work-precision points and (without `quick`) the row
+/// timings, the general materials and the Euler baseline on them; always one fit, and, when
+/// `batch_rows > 0`, the `cor --input` path on that many random rows.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BenchOptions {
+    /// One case, one setting per solver, no row timings (CI smoke test).
+    pub quick: bool,
+    /// Seconds of repeats per timed point.
+    pub budget: f64,
+    /// Random rows for the `cor --input` timing (0: skip).
+    pub batch_rows: usize,
+}
+
+/// Velocities of the `curve` timing (`--v0`, log-spaced) on the default scene.
+pub const CURVE_VELOCITIES: &str = "0.01:10:200";
+
+/// Everything one bench run measured.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BenchReport {
+    /// The options it ran with.
+    pub options: BenchOptions,
+    /// The work-precision points.
+    pub points: Vec<BenchPoint>,
+    /// The row timings of `fast` (empty with `quick`).
+    pub timed: Vec<(TimedRows, Vec<RowTiming>)>,
+    /// `fast` on the general materials (empty with `quick`).
+    pub general: Vec<GeneralTiming>,
+    /// The Euler baseline against `fast` on a general material (not with `quick`).
+    pub euler_general: Option<EulerSpeedup>,
+    /// One 10-drop fit.
+    pub fit: FitTiming,
+    /// `cor --input` rows and their wall time (s), when asked for.
+    pub batch: Option<(usize, f64)>,
+    /// Wall time (s) of `curve --v0 0.01:10:200 --log` on the default scene.
+    pub curve_seconds: f64,
+    /// The machine it ran on ([`machine`]).
+    pub machine: String,
+}
+
+/// Units of progress [`run_full`] reports: the work-precision points and, without `quick`,
+/// every row of every pass of the row timings.
+pub fn full_units(opts: &BenchOptions) -> Result<u64> {
+    let mut n = units(opts.quick);
+    if !opts.quick {
+        for kind in TimedRows::ALL {
+            n += (kind.rows()? * TIMING_REPEATS) as u64;
+        }
+    }
+    Ok(n)
+}
+
+/// Run the whole benchmark ([`BenchOptions`]); `tick` as [`full_units`] counts. A budget that
+/// is not positive and finite is refused ([`Error::OutOfRange`]).
+pub fn run_full(opts: &BenchOptions, tick: &dyn Fn()) -> Result<BenchReport> {
+    use crate::apps::{batch, curve};
+    use std::time::Instant;
+    crate::error::check(
+        "--budget",
+        opts.budget,
+        opts.budget > 0.0,
+        "0 < budget < inf",
+    )?;
+    let points = run(opts.quick, opts.budget, tick)?;
+    let mut timed = Vec::new();
+    let mut general = Vec::new();
+    let mut euler_general = None;
+    if !opts.quick {
+        for kind in TimedRows::ALL {
+            timed.push((kind, kind.time(tick)?));
+        }
+        general = general_timing(opts.budget)?;
+        euler_general = Some(general_euler_speedup(opts.budget)?);
+    }
+    let fit = fit_timing()?;
+    let batch = if opts.batch_rows > 0 {
+        let rows = batch::random_rows(opts.batch_rows, 1)?;
+        let t0 = Instant::now();
+        batch::solve_rows("random", &rows, &SolveOptions::default())?;
+        Some((opts.batch_rows, t0.elapsed().as_secs_f64()))
+    } else {
+        None
+    };
+    let scene = crate::io::scene::Scene::default_scene();
+    let range = curve::VelocityRange::parse(CURVE_VELOCITIES, true)?;
+    let t0 = Instant::now();
+    curve::run(&scene.impact, &scene.options, &range, &|| {})?;
+    let curve_seconds = t0.elapsed().as_secs_f64();
+    Ok(BenchReport {
+        options: *opts,
+        points,
+        timed,
+        general,
+        euler_general,
+        fit,
+        batch,
+        curve_seconds,
+        machine: machine(),
+    })
+}
+
+impl BenchReport {
+    /// Write `bench.csv`, `work-precision.svg` and the per-row CSVs of the row timings into
+    /// `dir`.
+    pub fn write_files(&self, dir: &Path) -> Result<()> {
+        write_csv(&dir.join("bench.csv"), &self.points)?;
+        plot(&dir.join("work-precision.svg"), &self.points)?;
+        for (kind, rows) in &self.timed {
+            write_timing_csv(&dir.join(kind.csv_name()), rows, *kind)?;
+        }
+        Ok(())
+    }
+
+    /// The line on the `curve` timing.
+    fn curve_line(&self) -> String {
+        format!(
+            "`mdr-impact curve --v0 {CURVE_VELOCITIES} --log` on the default scene (200 \
+             velocities, all cores): {:.3} s.\n",
+            self.curve_seconds
+        )
+    }
+
+    /// The terminal report: one line per work-precision point, the timing tables, the fit,
+    /// batch and curve times and the design targets.
+    pub fn text(&self) -> String {
+        let mut s = String::new();
+        for p in &self.points {
+            let _ = writeln!(
+                s,
+                "{:<10} rtol={:<6.0e} {:<28} {:>12}  cor err {:.1e}  force err {:.1e}",
+                p.solver.name(),
+                p.rtol,
+                p.case,
+                fmt_time(p.median_seconds),
+                p.cor_error,
+                p.force_error
+            );
+        }
+        for (kind, rows) in &self.timed {
+            let _ = writeln!(s, "{}", timing_table(rows, *kind));
+        }
+        let random = random_rows_of(&self.timed);
+        if !self.options.quick {
+            let _ = writeln!(s, "{}", general_timing_table(&self.general, random));
+        }
+        if let Some(r) = &self.euler_general {
+            s.push_str(&general_euler_text(r));
+        }
+        s.push_str(&fit_timing_text(&self.fit));
+        if let Some((rows, secs)) = self.batch {
+            let _ = writeln!(s, "cor --input path: {rows} rows in {secs:.2} s");
+        }
+        let _ = writeln!(
+            s,
+            "curve --v0 {CURVE_VELOCITIES} --log (default scene): {:.3} s",
+            self.curve_seconds
+        );
+        if !self.timed.is_empty() {
+            s.push_str(&targets(
+                &self.timed,
+                speedup(&self.points),
+                self.batch,
+                &general_targets(&self.general, random),
+            ));
+        }
+        s
+    }
+
+    /// The body of the performance section of VALIDATION.md.
+    pub fn section(&self) -> String {
+        let mut s = summary(
+            &self.points,
+            &self.machine,
+            self.batch,
+            &self.timed,
+            &self.general,
+        );
+        s.push('\n');
+        s.push_str(&fit_timing_text(&self.fit));
+        if let Some(r) = &self.euler_general {
+            s.push('\n');
+            s.push_str(&general_euler_text(r));
+        }
+        s.push('\n');
+        s.push_str(&self.curve_line());
+        s
+    }
+}

@@ -1,0 +1,157 @@
+//! The design targets of `fast`, checked against the timings of a run.
+
+use std::fmt::Write as _;
+
+use super::*;
+
+/// Design targets of `fast` (checked by [`targets()`]): median CoR-only time per impact in every
+/// group of [`timing_groups`] at rtol 1e-6 and 1e-10 (s).
+pub const TARGET_MEDIAN_SECONDS: [f64; 2] = [20e-6, 200e-6];
+/// Design target: `mdr-euler` time over `fast` time at equal CoR error (at most 1e-4).
+pub const TARGET_SPEEDUP: f64 = 1000.0;
+/// Design target: `cor --input` rows at rtol 1e-6 and the wall time allowed for them (s).
+pub const TARGET_BATCH: (usize, f64) = (100_000, 2.0);
+
+/// A list stating which design targets this run met and which it did not (with the measured
+/// values): [`TARGET_MEDIAN_SECONDS`] per group of rows, [`TARGET_SPEEDUP`] and
+/// [`TARGET_BATCH`] (when measured).
+pub fn targets(
+    timed: &[(TimedRows, Vec<RowTiming>)],
+    speedup: Option<f64>,
+    batch: Option<(usize, f64)>,
+    general: &[String],
+) -> String {
+    let mut parts = Vec::new();
+    for (kind, rows) in timed {
+        let stats = group_stats(rows);
+        for (k, (&rtol, &limit)) in TIMING_RTOLS.iter().zip(&TARGET_MEDIAN_SECONDS).enumerate() {
+            let missed: Vec<String> = stats
+                .iter()
+                .filter(|g| g.median[k] > limit)
+                .map(|g| format!("{} ({})", g.name, fmt_time(g.median[k])))
+                .collect();
+            let verdict = if missed.is_empty() {
+                format!("met in all {} groups", stats.len())
+            } else {
+                format!(
+                    "met in {} of {} groups, **not met** in {}",
+                    stats.len() - missed.len(),
+                    stats.len(),
+                    missed.join(", ")
+                )
+            };
+            parts.push(format!(
+                "median at most {} at rtol {rtol:.0e} on the {}: {verdict}",
+                fmt_time(limit),
+                kind.title()
+            ));
+        }
+    }
+    if let Some(x) = speedup {
+        let verdict = if x >= TARGET_SPEEDUP {
+            "met"
+        } else {
+            "**not met**"
+        };
+        parts.push(format!(
+            "at least {TARGET_SPEEDUP:.0}x less time than `mdr-euler` at equal CoR error: {verdict} ({x:.0}x)"
+        ));
+    }
+    if let Some((n, secs)) = batch {
+        let (want, limit) = TARGET_BATCH;
+        if n >= want {
+            let verdict = if secs <= limit { "met" } else { "**not met**" };
+            parts.push(format!(
+                "{want} rows through `cor --input` in at most {limit} s: {verdict} ({n} rows in {secs:.2} s)"
+            ));
+        }
+    }
+    parts.extend(general.iter().cloned());
+    let mut s = String::from("Design targets of `fast`, checked in this run:\n\n");
+    for p in parts {
+        let _ = writeln!(s, "- {p}.");
+    }
+    s
+}
+
+/// The standard solid of the random sample (`random`) in the CoR group of `r`: the group's
+/// name, median time (s), mean steps and evaluations at rtol 1e-6.
+fn same_group(
+    r: &GeneralTiming,
+    random: Option<&[RowTiming]>,
+) -> Option<(&'static str, f64, f64, f64)> {
+    let (name, member) = cor_groups().into_iter().find(|(_, member)| member(r.cor))?;
+    let sel: Vec<&RowTiming> = random?.iter().filter(|t| member(t.row.cor)).collect();
+    if sel.is_empty() {
+        return None;
+    }
+    let mut v: Vec<f64> = sel.iter().map(|t| t.seconds[0]).collect();
+    v.sort_by(|a, b| a.total_cmp(b));
+    let n = sel.len() as f64;
+    let steps = sel.iter().map(|t| t.steps[0] as f64).sum::<f64>() / n;
+    let evals = sel.iter().map(|t| t.evaluations[0] as f64).sum::<f64>() / n;
+    Some((name, v[v.len() / 2], steps, evals))
+}
+
+/// Design target: `fast` at rtol 1e-6 on a real polymer of at least 30 terms
+/// ([`crate::report::catalogue::POLYMERS`]) takes at most this multiple of the median time of the
+/// standard solid in the same CoR group.
+pub const TARGET_GENERAL_RATIO: f64 = 3.0;
+
+/// The target [`TARGET_GENERAL_RATIO`] for the real polymers of at least 30 `G_eq` terms among
+/// `rows`, each beside the standard solid of its CoR group in `random` (one list entry per
+/// polymer; none without the random sample).
+pub fn general_targets(rows: &[GeneralTiming], random: Option<&[RowTiming]>) -> Vec<String> {
+    rows.iter()
+        .filter(|r| r.terms >= 30 && crate::report::catalogue::POLYMERS.iter().any(|p| p.id == r.id))
+        .filter_map(|r| {
+            let (name, t, _, _) = same_group(r, random)?;
+            let x = r.seconds / t;
+            let verdict = if x <= TARGET_GENERAL_RATIO {
+                "met"
+            } else {
+                "**not met**"
+            };
+            Some(format!(
+                "the {}-term real polymer `{}` at rtol 1e-6 in at most {TARGET_GENERAL_RATIO:.0}x the \
+                 median time of the standard solid in its CoR group ({name}): {verdict} ({x:.1}x: {} \
+                 against {})",
+                r.terms,
+                r.id,
+                fmt_time(r.seconds),
+                fmt_time(t)
+            ))
+        })
+        .collect()
+}
+
+/// Markdown table of [`general_timing`], each case beside the standard solid of the random
+/// sample in the same CoR group (`random`: the rows of [`TimedRows::Random`], if timed), with
+/// the ratio of the median times.
+pub fn general_timing_table(rows: &[GeneralTiming], random: Option<&[RowTiming]>) -> String {
+    let mut s = String::from(
+        "| case | G_eq terms | CoR | median time | steps / evaluations | without the merge of far terms (`fast::reduce`) | standard solid, same CoR group (random rows): median time, steps / evaluations | ratio |\n\
+         | --- | --- | --- | --- | --- | --- | --- | --- |\n",
+    );
+    for r in rows {
+        let (std_text, ratio) = match same_group(r, random) {
+            Some((name, t, steps, evals)) => (
+                format!("{name}: {}, {steps:.1} / {evals:.0}", fmt_time(t)),
+                format!("{:.1}", r.seconds / t),
+            ),
+            None => ("-".to_string(), "-".to_string()),
+        };
+        let _ = writeln!(
+            s,
+            "| {} | {} | {:.4} | {} | {} / {} | {} | {std_text} | {ratio} |",
+            r.id,
+            r.terms,
+            r.cor,
+            fmt_time(r.seconds),
+            r.steps,
+            r.evaluations,
+            fmt_time(r.unreduced_seconds)
+        );
+    }
+    s
+}

@@ -1,0 +1,325 @@
+//! Unit tests of the bench tables and targets.
+
+use super::*;
+use crate::report::validate::ExternalRow;
+
+fn timing(cor: f64, steps: [u64; 2], evaluations: [u64; 2]) -> RowTiming {
+    RowTiming {
+        row: ExternalRow {
+            nu: 0.3,
+            p2: 1.0,
+            p3: 1.0,
+            cor,
+            contact_time: 1.0,
+            max_indentation: 0.5,
+            est_rel_err: 1e-12,
+        },
+        seconds: [1e-5, 5e-5],
+        cor_error: [1e-7, 1e-11],
+        steps,
+        evaluations,
+    }
+}
+
+#[test]
+fn timing_table_reports_mean_work_per_group() {
+    let rows = [
+        timing(0.95, [10, 40], [60, 300]),
+        timing(0.05, [30, 90], [200, 700]),
+        timing(0.04, [20, 70], [100, 500]),
+    ];
+    let table = timing_table(&rows, TimedRows::External);
+    // means over the group's rows: (10+30+20)/3 = 20 steps, (60+200+100)/3 = 120 evaluations
+    for (row, cell) in [
+        ("| all rows | 3 |", "| 20.0 / 120 |"),
+        ("| all rows | 3 |", "| 66.7 / 500 |"),
+        ("| strongly dissipative", "| 25.0 / 150 |"),
+        ("| nearly elastic", "| 10.0 / 60 |"),
+    ] {
+        assert!(line_of(&table, row).contains(cell), "{cell} in\n{table}");
+    }
+    assert!(table.starts_with("| rows of the external tables | n |"));
+    // without a reference (the random sample at rtol 1e-10): a dash, not NaN
+    let mut random = rows.clone();
+    for t in &mut random {
+        t.cor_error[1] = f64::NAN;
+    }
+    let table = timing_table(&random, TimedRows::Random);
+    assert!(table.starts_with("| random rows of the paper's range | n |"));
+    let all = line_of(&table, "| all rows | 3 |");
+    assert!(all.contains("| 1.0e-7 | 20.0 / 120 |"), "{table}");
+    assert!(all.contains("| - | 66.7 / 500 |"), "{table}");
+    assert!(!table.contains("NaN"), "{table}");
+}
+
+#[test]
+fn general_timing_table_compares_within_the_cor_group() {
+    let random = [
+        timing(0.95, [10, 40], [60, 300]),
+        timing(0.5, [30, 90], [200, 700]),
+        timing(0.4, [20, 70], [100, 500]),
+    ];
+    let general = [
+        GeneralTiming {
+            id: "g-elastic",
+            terms: 30,
+            cor: 0.97,
+            seconds: 3e-5,
+            steps: 40,
+            evaluations: 250,
+            unreduced_seconds: 6e-5,
+        },
+        GeneralTiming {
+            id: "g-dissipative",
+            terms: 62,
+            cor: 0.6,
+            seconds: 2e-5,
+            steps: 35,
+            evaluations: 200,
+            unreduced_seconds: 4e-5,
+        },
+    ];
+    let table = general_timing_table(&general, Some(&random));
+    // the nearly elastic group has one row (1e-5 s): ratio 3; the dissipative one two rows,
+    // median the upper one (1e-5 s), mean work 25.0 / 150: ratio 2
+    let e = line_of(&table, "| g-elastic | 30 |");
+    assert!(
+        e.contains("nearly elastic (e >= 0.9)") && e.ends_with("| 3.0 |"),
+        "{table}"
+    );
+    let d = line_of(&table, "| g-dissipative | 62 |");
+    assert!(
+        d.contains("25.0 / 150") && d.ends_with("| 2.0 |"),
+        "{table}"
+    );
+    // without the random sample: dashes
+    let table = general_timing_table(&general, None);
+    assert!(
+        line_of(&table, "| g-elastic").ends_with("| - | - |"),
+        "{table}"
+    );
+}
+
+fn line_of(table: &str, prefix: &str) -> String {
+    table
+        .lines()
+        .find(|l| l.starts_with(prefix))
+        .unwrap_or_else(|| panic!("no row {prefix} in\n{table}"))
+        .to_string()
+}
+
+/// The 3x target applies to the real polymers of at least 30 terms only, each against the
+/// standard solid of its own CoR group, and lands in the target list.
+#[test]
+fn general_targets_compare_polymers_with_their_group() {
+    let g = |id: &'static str, terms, cor, seconds| GeneralTiming {
+        id,
+        terms,
+        cor,
+        seconds,
+        steps: 40,
+        evaluations: 300,
+        unreduced_seconds: 2.0 * seconds,
+    };
+    let rows = [
+        g("polyisobutylene", 30, 0.28, 25e-6),
+        g("epoxy", 24, 0.94, 90e-6),
+        g("prony-30-incompressible", 30, 0.87, 90e-6),
+    ];
+    let random = [
+        timing(0.5, [10, 40], [60, 300]),
+        timing(0.95, [10, 40], [60, 300]),
+    ];
+    let t = general_targets(&rows, Some(&random));
+    assert_eq!(t.len(), 1, "{t:?}");
+    assert!(t[0].contains("`polyisobutylene`"), "{}", t[0]);
+    assert!(
+        t[0].contains(": met (2.5x: 25.0 µs against 10.0 µs)"),
+        "{}",
+        t[0]
+    );
+    let slow = [g("polyisobutylene", 30, 0.28, 35e-6)];
+    let t = general_targets(&slow, Some(&random));
+    assert!(t[0].contains("**not met** (3.5x"), "{}", t[0]);
+    assert!(general_targets(&rows, None).is_empty());
+    let text = targets(&[], None, None, &t);
+    assert!(text.contains("- the 30-term real polymer"), "{text}");
+}
+
+#[test]
+fn targets_name_the_groups_that_miss_them() {
+    let mut slow = timing(0.05, [30, 90], [200, 700]);
+    slow.seconds = [40e-6, 150e-6];
+    let rows = [timing(0.95, [10, 40], [60, 300]), slow];
+    let text = targets(
+        &[(TimedRows::External, rows.to_vec())],
+        Some(3250.0),
+        Some((100_000, 1.01)),
+        &[],
+    );
+    // all rows: median of 10 µs and 40 µs is the upper one (40 µs)
+    assert!(
+        text.contains(
+            "median at most 20.0 µs at rtol 1e-6 on the rows of the external tables: met in 1 \
+             of 3 groups, **not met** in all rows (40.0 µs), strongly dissipative (e < 0.1) \
+             (40.0 µs)"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("at rtol 1e-10 on the rows of the external tables: met in all 3 groups"),
+        "{text}"
+    );
+    assert!(text.contains(": met (3250x)"), "{text}");
+    assert!(text.contains(": met (100000 rows in 1.01 s)"), "{text}");
+    let fast = [timing(0.95, [10, 40], [60, 300])];
+    let text = targets(
+        &[
+            (TimedRows::External, rows.to_vec()),
+            (TimedRows::Random, fast.to_vec()),
+        ],
+        Some(900.0),
+        Some((1000, 0.1)),
+        &[],
+    );
+    assert!(
+        text.contains("at rtol 1e-6 on the random rows of the paper's range: met in all 2 groups"),
+        "{text}"
+    );
+    assert!(text.contains("**not met** (900x)"), "{text}");
+    assert!(
+        !text.contains("cor --input"),
+        "a smaller batch is not the target: {text}"
+    );
+}
+
+#[test]
+fn random_timing_measures_every_row_against_its_tight_solve() {
+    let t = random_timing(20, RANDOM_SEED, &|| {}).unwrap();
+    assert_eq!(t.len(), 20);
+    for r in &t {
+        let row = &r.row;
+        assert!((-0.99..=0.5).contains(&row.nu), "{row:?}");
+        assert!((1e-4..=1e2).contains(&row.p2) && (1e-3..=1e4).contains(&row.p3));
+        assert!(row.cor > 0.0 && row.cor <= 1.0, "{row:?}");
+        // the rtol 1e-6 CoR is within its request of the rtol 1e-10 one
+        assert!(r.cor_error[0] <= 1e-6, "{r:?}");
+        assert!(r.cor_error[1].is_nan());
+        assert!(r.seconds.iter().all(|&s| s > 0.0 && s.is_finite()));
+        assert!(r.steps[1] > r.steps[0] && r.evaluations[1] > r.evaluations[0]);
+    }
+    // the same sample as `cor --input` draws for this seed
+    let rows = crate::apps::batch::random_rows(20, RANDOM_SEED).unwrap();
+    assert_eq!(rows[3].groups.p3, t[3].row.p3);
+}
+
+#[test]
+fn external_csv_has_work_columns() {
+    let dir = std::env::temp_dir().join(format!("mdr-impact-bench-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("bench_external.csv");
+    write_timing_csv(
+        &path,
+        &[timing(0.5, [12, 45], [70, 310])],
+        TimedRows::External,
+    )
+    .unwrap();
+    let text = std::fs::read_to_string(&path).unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let values: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| values[header.iter().position(|h| *h == name).unwrap()];
+    assert_eq!(col("steps_rtol_1e-6"), "12");
+    assert_eq!(col("evaluations_rtol_1e-6"), "70");
+    assert_eq!(col("steps_rtol_1e-10"), "45");
+    assert_eq!(col("evaluations_rtol_1e-10"), "310");
+    assert_eq!(col("cor_reference").parse::<f64>().unwrap(), 0.5);
+}
+
+fn report(quick: bool) -> BenchReport {
+    let point = |solver, rtol, seconds, cor_error| BenchPoint {
+        solver,
+        rtol,
+        case: "dissipative-nu045",
+        regime: "dissipative",
+        median_seconds: seconds,
+        repeats: 3,
+        cor_error,
+        force_error: 1e-5,
+    };
+    BenchReport {
+        options: BenchOptions {
+            quick,
+            budget: 0.1,
+            batch_rows: 0,
+        },
+        points: vec![
+            point(SolverKind::MdrEuler, 1e-4, 2e-2, 5e-5),
+            point(SolverKind::Fast, 1e-4, 2e-5, 1e-6),
+        ],
+        timed: if quick {
+            vec![]
+        } else {
+            vec![(TimedRows::Random, vec![timing(0.5, [10, 20], [60, 120])])]
+        },
+        general: vec![],
+        euler_general: None,
+        fit: FitTiming {
+            seconds: 1.5,
+            solves: 100,
+            drops: 10,
+        },
+        batch: Some((1000, 0.25)),
+        curve_seconds: 0.0125,
+        machine: "a test machine".into(),
+    }
+}
+
+#[test]
+fn full_report_text_section_and_files() {
+    let r = report(false);
+    let text = r.text();
+    let first = text.lines().next().unwrap();
+    assert!(first.starts_with("mdr-euler  rtol=1e-4"), "{first}");
+    assert!(
+        text.contains("cor --input path: 1000 rows in 0.25 s\n"),
+        "{text}"
+    );
+    assert!(text.contains("curve --v0 0.01:10:200 --log (default scene): 0.013 s\n"));
+    assert!(text.contains("Design targets of `fast`"), "{text}");
+    let section = r.section();
+    assert!(section.starts_with("Measured by `mdr-impact bench` in one run on a test machine"));
+    assert!(section.contains("`mdr-impact fit` of 10 drops"));
+    assert!(section.ends_with(
+        "\n`mdr-impact curve --v0 0.01:10:200 --log` on the default scene (200 velocities, all \
+         cores): 0.013 s.\n"
+    ));
+    let dir = tempfile::tempdir().unwrap();
+    r.write_files(dir.path()).unwrap();
+    for f in ["bench.csv", "work-precision.svg", "bench_random.csv"] {
+        assert!(dir.path().join(f).exists(), "{f}");
+    }
+    // quick: no row timings, no targets
+    let q = report(true);
+    assert!(!q.text().contains("Design targets"));
+    assert_eq!(full_units(&q.options).unwrap(), units(true));
+}
+
+#[test]
+fn run_full_refuses_a_budget_that_is_not_positive() {
+    for budget in [0.0, -1.0, f64::NAN] {
+        let opts = BenchOptions {
+            quick: true,
+            budget,
+            batch_rows: 0,
+        };
+        assert!(matches!(
+            run_full(&opts, &|| {}),
+            Err(Error::OutOfRange {
+                field: "--budget",
+                ..
+            })
+        ));
+    }
+}
