@@ -300,12 +300,12 @@ fn scene_resolution_and_empty_paths_refused() {
         (
             scene_without_outputs("elements = 200\nsteps = 2000")
                 .replace("name = \"auto\"", "name = \"fast\""),
-            "not 'fast'",
+            "fast: [solver] elements/steps",
         ),
         (
             scene_without_outputs("elements = 200\nsteps = 2000")
                 .replace("name = \"auto\"", "name = \"reference\""),
-            "not 'reference'",
+            "reference: [solver] elements/steps",
         ),
         (
             format!("{}[output]\nhistory = \"\"\n", scene_without_outputs("")),

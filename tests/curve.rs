@@ -203,7 +203,7 @@ fn writes_csv_and_svg() {
     let csv = std::fs::read_to_string(&w.csv).unwrap();
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(lines[0], CSV_HEADER);
-    assert_eq!(lines[0], "v0,cor,contact_time,max_force,max_compression");
+    assert!(lines[0].starts_with("v0,cor,contact_time,max_force,max_compression,"));
     assert_eq!(lines.len(), 13);
     // full precision: the numbers read back exactly
     for (line, row) in lines[1..].iter().zip(&c.rows) {
@@ -215,7 +215,9 @@ fn writes_csv_and_svg() {
                 row.cor,
                 row.contact_time,
                 row.max_force,
-                row.max_compression
+                row.max_compression,
+                row.contact_radius_ratio,
+                row.indentation_ratio
             ]
         );
     }
@@ -258,7 +260,9 @@ fn cli_curve_writes_both_files() {
     let out = String::from_utf8(o.stdout).unwrap();
     assert!(out.contains("minimum CoR") && out.contains("p3 = 1 at"));
     let csv = std::fs::read_to_string(dir.path().join("out/curve.csv")).unwrap();
-    assert!(csv.starts_with("v0,cor,contact_time,max_force,max_compression\n"));
+    assert!(csv.starts_with(
+        "v0,cor,contact_time,max_force,max_compression,contact_radius_ratio,indentation_ratio\n"
+    ));
     assert_eq!(csv.lines().count(), 21);
     assert!(std::fs::read_to_string(dir.path().join("out/curve.svg"))
         .unwrap()

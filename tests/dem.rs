@@ -42,6 +42,9 @@ fn law_rows(c: &HertzContact, a: f64, spec: &str) -> Vec<CurveRow> {
                 contact_time: d.contact_time,
                 max_force: 0.0,
                 max_compression: 0.0,
+                contact_radius_ratio: 0.0,
+                indentation_ratio: 0.0,
+                outside_validity: false,
             }
         })
         .collect()

@@ -35,6 +35,9 @@ fn report(geometry: Geometry) -> DemReport {
                 contact_time: d.contact_time,
                 max_force: 0.0,
                 max_compression: 0.0,
+                contact_radius_ratio: 0.0,
+                indentation_ratio: 0.0,
+                outside_validity: false,
             }
         })
         .collect();

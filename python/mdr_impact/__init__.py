@@ -236,6 +236,11 @@ class Curve:
         Maximum contact force (N).
     max_compression : ndarray
         Maximum compression = maximum indentation (m).
+    contact_radius_ratio, indentation_ratio : ndarray
+        ``a_max / R`` and ``d_max / R`` at each velocity (the model's validity measures).
+    outside_validity : ndarray of bool
+        Where the answer carries a validity warning (``ImpactResult.warnings``): a contact too
+        large for the paraboloid, or elastic waves too slow for the quasi-static model.
     limits : dict
         The elastic limits of the material (see ``mdr-impact curve``): ``relaxed_modulus`` and
         ``glassy_modulus`` (plane-strain ``E* = 4 G_eq``, Pa), ``p3_unit_velocity`` (m/s, the
@@ -250,6 +255,9 @@ class Curve:
         self.contact_time = values["contact_time"]
         self.max_force = values["max_force"]
         self.max_compression = values["max_compression"]
+        self.contact_radius_ratio = values["contact_radius_ratio"]
+        self.indentation_ratio = values["indentation_ratio"]
+        self.outside_validity = values["outside_validity"]
         self.limits = dict(values["limits"])
 
     def __len__(self):

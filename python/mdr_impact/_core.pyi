@@ -96,6 +96,8 @@ class ImpactResult:
     time_of_max_indentation: float
     max_force: float
     max_contact_radius: float
+    warnings: list[str]
+    validity: dict[str, float | None]
     dissipated_energy: float
     estimated_rel_error: Optional[float]
     solver: str

@@ -791,7 +791,8 @@ impl Scene {
         let bodies = impact
             .bodies()
             .map(|b| b.rebound_velocities(impact.velocity(), outcome.cor));
-        Ok(ImpactResult::new(outcome, bodies))
+        let validity = mdr_impact::model::validity::Validity::of(impact, &outcome);
+        Ok(ImpactResult::new(outcome, bodies, validity))
     }
 
     /// Impact velocity (m/s; relative normal velocity for two bodies).
@@ -914,14 +915,25 @@ struct ImpactResult {
     /// Why `auto` answered with `reference` instead of `fast`, else `None`.
     #[pyo3(get)]
     fallback: Option<String>,
+    /// Why the model may not apply to this answer (one sentence each; empty when it does):
+    /// the same lines as `run`'s `warning` lines and `run --json`'s `warnings`.
+    #[pyo3(get)]
+    warnings: Vec<String>,
+    validity: mdr_impact::model::validity::Validity,
     work: mdr_impact::Work,
     histories: Option<History>,
     velocities: Option<(f64, f64)>,
 }
 
 impl ImpactResult {
-    fn new(o: Outcome, velocities: Option<(f64, f64)>) -> Self {
+    fn new(
+        o: Outcome,
+        velocities: Option<(f64, f64)>,
+        validity: mdr_impact::model::validity::Validity,
+    ) -> Self {
         Self {
+            warnings: validity.warnings.clone(),
+            validity,
             cor: o.cor,
             rebound_velocity: o.rebound_velocity,
             contact_time: o.contact_time,
@@ -942,6 +954,20 @@ impl ImpactResult {
 
 #[pymethods]
 impl ImpactResult {
+    /// Validity measures (`run --json`'s `validity`): `contact_radius_ratio` (a_max/R),
+    /// `indentation_ratio` (d_max/R), `sphere_force_excess` (the exact sphere's extra force at
+    /// a_max, relative; `None` beyond the sphere), `wave_transit_ratio` (`None` without a
+    /// density).
+    #[getter]
+    fn validity<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let v = &self.validity;
+        let d = PyDict::new(py);
+        d.set_item("contact_radius_ratio", v.contact_radius_ratio)?;
+        d.set_item("indentation_ratio", v.indentation_ratio)?;
+        d.set_item("sphere_force_excess", v.sphere_force_excess)?;
+        d.set_item("wave_transit_ratio", v.wave_transit_ratio)?;
+        Ok(d)
+    }
     /// Work counters: `steps`, `elements`, `element_updates`, `evaluations`, `levels`.
     #[getter]
     fn work<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
@@ -1025,6 +1051,19 @@ fn curve_values<'py>(
     d.set_item(
         "max_compression",
         array(py, col(|r| r.max_compression), &shape)?,
+    )?;
+    d.set_item(
+        "contact_radius_ratio",
+        array(py, col(|r| r.contact_radius_ratio), &shape)?,
+    )?;
+    d.set_item(
+        "indentation_ratio",
+        array(py, col(|r| r.indentation_ratio), &shape)?,
+    )?;
+    let outside: Vec<bool> = rows.iter().map(|r| r.outside_validity).collect();
+    d.set_item(
+        "outside_validity",
+        numpy::PyArray1::from_vec(py, outside).reshape(shape.clone())?,
     )?;
     let l = curve::limits(&s.impact);
     let limits = PyDict::new(py);

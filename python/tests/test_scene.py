@@ -150,3 +150,18 @@ def test_curve_shapes_and_errors():
 def test_docstring_examples():
     failures, tried = doctest.testmod(mi, verbose=False)
     assert tried > 0 and failures == 0
+
+
+def test_validity_and_warnings_as_run_json():
+    """An answer says when the model does not apply, as `run --json` does."""
+    inside = mi.Scene.default().with_velocity(1.0).run(history=False)
+    assert inside.warnings == []
+    v = inside.validity
+    assert abs(v["contact_radius_ratio"] - inside.max_contact_radius / 5.0e-3) < 1e-12
+    assert v["wave_transit_ratio"] is None
+    outside = mi.Scene.default().with_velocity(100.0).run(history=False)
+    assert len(outside.warnings) == 1 and "a_max/R" in outside.warnings[0]
+    c = mi.curve(mi.Scene.default(), np.array([0.1, 1.0, 100.0]))
+    assert c.contact_radius_ratio.shape == (3,)
+    assert list(c.outside_validity) == [False, False, True]
+    assert np.all(np.diff(c.indentation_ratio) > 0)

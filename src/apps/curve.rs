@@ -36,14 +36,16 @@ use rayon::prelude::*;
 
 use crate::error::{Error, Result};
 use crate::io::output::fmt;
-use crate::io::plot::{cor_chart_svg, velocity_span, CorLine, COR_AXIS_TOP};
+use crate::io::plot::{cor_chart_svg, velocity_span, CorLine, Shaded, COR_AXIS_TOP};
 use crate::model::hertz::HERTZ_I;
 use crate::model::impact::Impact;
+use crate::model::validity::Validity;
 use crate::solvers::{solve, SolveOptions};
 use plotters::style::RGBColor;
 
 /// The CSV header of `curve.csv`.
-pub const CSV_HEADER: &str = "v0,cor,contact_time,max_force,max_compression";
+pub const CSV_HEADER: &str =
+    "v0,cor,contact_time,max_force,max_compression,contact_radius_ratio,indentation_ratio";
 
 /// Largest number of velocities of one curve.
 pub const MAX_VELOCITIES: usize = 100_000;
@@ -174,6 +176,29 @@ pub struct CurveRow {
     pub max_force: f64,
     /// Maximum compression = maximum indentation depth (m).
     pub max_compression: f64,
+    /// `a_max / R` ([`Validity::contact_radius_ratio`]).
+    pub contact_radius_ratio: f64,
+    /// `d_max / R` ([`Validity::indentation_ratio`]).
+    pub indentation_ratio: f64,
+    /// Whether the answer at this velocity carries a validity warning ([`Validity`]).
+    pub outside_validity: bool,
+}
+
+impl CurveRow {
+    /// The row of `outcome` (SI) of `impact` at `v0`, with its validity measures.
+    pub fn new(impact: &Impact, v0: f64, o: &crate::model::impact::Outcome) -> Self {
+        let v = Validity::of(impact, o);
+        CurveRow {
+            v0,
+            cor: o.cor,
+            contact_time: o.contact_time,
+            max_force: o.max_force,
+            max_compression: o.max_indentation,
+            contact_radius_ratio: v.contact_radius_ratio,
+            indentation_ratio: v.indentation_ratio,
+            outside_validity: !v.warnings.is_empty(),
+        }
+    }
 }
 
 /// The elastic limits of the curve and where the material leaves them (see the module docs).
@@ -301,14 +326,7 @@ pub fn run_velocities(
         .par_iter()
         .map(|&v0| {
             let row = impact_at(impact, v0)
-                .and_then(|i| solve(&i, &opts))
-                .map(|o| CurveRow {
-                    v0,
-                    cor: o.cor,
-                    contact_time: o.contact_time,
-                    max_force: o.max_force,
-                    max_compression: o.max_indentation,
-                })
+                .and_then(|i| solve(&i, &opts).map(|o| CurveRow::new(&i, v0, &o)))
                 .map_err(|e| e.at(format!("{FIELD}: at v0 = {v0:e} m/s")));
             progress();
             row
@@ -328,12 +346,14 @@ pub fn csv_text(rows: &[CurveRow]) -> String {
     s.push('\n');
     for r in rows {
         s.push_str(&format!(
-            "{},{},{},{},{}\n",
+            "{},{},{},{},{},{},{}\n",
             fmt(r.v0),
             fmt(r.cor),
             fmt(r.contact_time),
             fmt(r.max_force),
-            fmt(r.max_compression)
+            fmt(r.max_compression),
+            fmt(r.contact_radius_ratio),
+            fmt(r.indentation_ratio)
         ));
     }
     s
@@ -407,11 +427,32 @@ pub fn summary(curve: &Curve, written: Option<&Written>) -> String {
             at("fastest", l.glassy_crossover)
         ),
     );
+    if let Some(w) = validity_warning(&curve.rows) {
+        line("warning", format!("{w}: shaded on the plot"));
+    }
     if let Some(w) = written {
         line("curve written to", w.csv.display().to_string());
         line("plot written to", w.svg.display().to_string());
     }
     out
+}
+
+/// A warning when some velocities of `rows` lie outside the model's validity ([`Validity`]):
+/// how many, from which velocity, and the largest `a_max / R` there.
+pub fn validity_warning(rows: &[CurveRow]) -> Option<String> {
+    let out: Vec<&CurveRow> = rows.iter().filter(|r| r.outside_validity).collect();
+    let first = out.first()?;
+    let worst = out
+        .iter()
+        .map(|r| r.contact_radius_ratio)
+        .fold(0.0, f64::max);
+    Some(format!(
+        "{} of {} velocities lie outside the model's validity (from v0 = {:.4e} m/s; a_max/R up \
+         to {worst:.3}; `run --json` at one of them says why)",
+        out.len(),
+        rows.len(),
+        first.v0
+    ))
 }
 
 /// The SVG text of a CoR-against-velocity curve : `e(v0)` on a linear or (with
@@ -458,11 +499,33 @@ pub fn cor_curve_svg(path: &Path, curve: &Curve, log: bool) -> Result<String> {
         RGBColor(30, 80, 200),
         2,
     ));
+    // velocities outside the model's validity, shaded half way to their neighbours
+    let rows = &curve.rows;
+    let mut spans: Vec<(f64, f64)> = Vec::new();
+    for (k, r) in rows.iter().enumerate().filter(|(_, r)| r.outside_validity) {
+        let mid = |a: f64, b: f64| if log { (a * b).sqrt() } else { 0.5 * (a + b) };
+        let lo = if k == 0 {
+            r.v0
+        } else {
+            mid(rows[k - 1].v0, r.v0)
+        };
+        let hi = rows.get(k + 1).map_or(r.v0, |n| mid(r.v0, n.v0));
+        match spans.last_mut() {
+            Some(last) if last.1 >= lo => last.1 = hi,
+            _ => spans.push((lo, hi)),
+        }
+    }
+    let shaded = Shaded {
+        spans,
+        label: "outside the model's validity (warnings: contact too large or waves too slow)"
+            .into(),
+    };
     cor_chart_svg(
         path,
         "Coefficient of restitution against impact velocity",
         (x0, x1),
         log,
         &lines,
+        &shaded,
     )
 }

@@ -7,6 +7,7 @@ use crate::error::{Error, Result};
 use crate::model::bodies::BodyMaterial;
 use crate::model::impact::{History, Impact, Outcome, Target};
 use crate::model::material::{Bulk, BulkRheology, Material, StandardSolid};
+use crate::model::validity::Validity;
 
 /// Write a file atomically: the bytes go to a temporary file in the same directory, which is
 /// renamed over `path` only when complete. Parent directories are created.
@@ -219,6 +220,18 @@ pub fn summary(impact: &Impact, o: &Outcome) -> String {
             o.work.levels
         ),
     );
+    let v = Validity::of(impact, o);
+    let mut measures = format!(
+        "a_max/R = {:.3}, d_max/R = {:.3}",
+        v.contact_radius_ratio, v.indentation_ratio
+    );
+    if let Some(w) = v.wave_transit_ratio {
+        measures.push_str(&format!(", wave transit / contact time = {w:.2e}"));
+    }
+    line("validity", measures);
+    for w in &v.warnings {
+        line("warning", w.clone());
+    }
     out
 }
 
@@ -232,13 +245,29 @@ pub fn json(o: &Outcome) -> String {
     value(o).to_string()
 }
 
-/// [`json`] of an impact's outcome: for a two-body collision with the key `bodies`
+/// [`json`] of an impact's outcome, with `validity` (`contact_radius_ratio` a_max/R,
+/// `indentation_ratio` d_max/R, `sphere_force_excess` (the exact sphere's extra force at a_max,
+/// relative), `wave_transit_ratio` (null without a density); [`Validity`]) and `warnings` (an
+/// array of strings, empty when the model applies); for a two-body collision with the key `bodies`
 /// (`{"a": {"rebound_velocity": ..}, "b": {..}}`, m/s, positive in A's approach direction, in
 /// the frame where B was at rest before the impact; see
 /// [`crate::model::bodies::TwoBodies::rebound_velocities`]); `max_indentation` is then the total
 /// compression of the two bodies.
 pub fn impact_json(impact: &Impact, o: &Outcome) -> String {
     let mut v = value(o);
+    let validity = Validity::of(impact, o);
+    if let Some(map) = v.as_object_mut() {
+        map.insert(
+            "validity".into(),
+            serde_json::json!({
+                "contact_radius_ratio": validity.contact_radius_ratio,
+                "indentation_ratio": validity.indentation_ratio,
+                "sphere_force_excess": validity.sphere_force_excess,
+                "wave_transit_ratio": validity.wave_transit_ratio,
+            }),
+        );
+        map.insert("warnings".into(), serde_json::json!(validity.warnings));
+    }
     if let (Some(b), Some(map)) = (impact.bodies(), v.as_object_mut()) {
         let (va, vb) = b.rebound_velocities(impact.velocity(), o.cor);
         map.insert(

@@ -115,6 +115,7 @@ pub fn cor_chart_svg(
     (x0, x1): (f64, f64),
     log: bool,
     lines: &[CorLine],
+    shaded: &Shaded,
 ) -> Result<String> {
     type Chart<'a, 'b, X> =
         ChartContext<'a, SVGBackend<'b>, Cartesian2d<X, plotters::coord::types::RangedCoordf64>>;
@@ -122,6 +123,7 @@ pub fn cor_chart_svg(
         path: &Path,
         chart: &mut Chart<'a, 'b, X>,
         lines: &[CorLine],
+        shaded: &Shaded,
     ) -> Result<()>
     where
         X: Ranged<ValueType = f64> + plotters::coord::ranged1d::ValueFormatter<f64>,
@@ -133,6 +135,19 @@ pub fn cor_chart_svg(
             .y_desc("coefficient of restitution e")
             .draw()
             .map_err(|x| e(&x))?;
+        if !shaded.spans.is_empty() {
+            let fill = RGBColor(230, 80, 60).mix(0.15).filled();
+            chart
+                .draw_series(
+                    shaded
+                        .spans
+                        .iter()
+                        .map(|&(a, b)| Rectangle::new([(a, 0.0), (b, COR_AXIS_TOP)], fill)),
+                )
+                .map_err(|x| e(&x))?
+                .label(shaded.label.as_str())
+                .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 18, y + 5)], fill));
+        }
         for (name, pts, color, width) in lines {
             let style = color.stroke_width(*width);
             chart
@@ -173,16 +188,25 @@ pub fn cor_chart_svg(
             let mut chart = builder
                 .build_cartesian_2d((x0..x1).log_scale(), 0.0..COR_AXIS_TOP)
                 .map_err(|x| e(&x))?;
-            draw(path, &mut chart, lines)?;
+            draw(path, &mut chart, lines, shaded)?;
         } else {
             let mut chart = builder
                 .build_cartesian_2d(x0..x1, 0.0..COR_AXIS_TOP)
                 .map_err(|x| e(&x))?;
-            draw(path, &mut chart, lines)?;
+            draw(path, &mut chart, lines, shaded)?;
         }
         root.present().map_err(|x| e(&x))?;
     }
     Ok(svg)
+}
+
+/// Velocity spans shaded on a CoR chart, with their legend entry (no entry without spans).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Shaded {
+    /// `(from, to)` in m/s.
+    pub spans: Vec<(f64, f64)>,
+    /// Legend text.
+    pub label: String,
 }
 
 /// The velocity range `(first, last)` of a curve's velocities (m/s); an error unless there are

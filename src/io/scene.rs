@@ -106,6 +106,8 @@ struct RawMaterial {
     k_0: Option<f64>,
     shear: Option<RawShear>,
     bulk: Option<RawBulk>,
+    /// Mass density (kg/m^3): enables the quasi-static check of the answers.
+    density: Option<f64>,
 }
 
 /// `[material.shear]`: `g_inf` with `terms` or `file`, or `instantaneous` with `ratios`.
@@ -351,10 +353,22 @@ fn has_material_keys(m: &RawMaterial) -> bool {
         || m.k_0.is_some()
         || m.shear.is_some()
         || m.bulk.is_some()
+        || m.density.is_some()
 }
 
-/// The material of a `[material]` table: rigid, standard solid or general.
+/// The material of a `[material]` table: rigid, standard solid or general, with its `density`
+/// when given.
 fn material_of(m: &RawMaterial, base: &Path) -> Result<BodyMaterial> {
+    match (material_kind(m, base)?, m.density) {
+        (BodyMaterial::Viscoelastic(v), Some(rho)) => Ok(BodyMaterial::Viscoelastic(
+            v.with_density(rho).map_err(|e| e.at("[material]"))?,
+        )),
+        (b, _) => Ok(b),
+    }
+}
+
+/// [`material_of`] without the density.
+fn material_kind(m: &RawMaterial, base: &Path) -> Result<BodyMaterial> {
     if let Some(rigid) = m.rigid {
         if has_material_keys(m) || !rigid {
             return Err(scene_error(

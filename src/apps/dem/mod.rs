@@ -346,6 +346,11 @@ fn fit_at(
             pct(WARN_REL_ERROR)
         ));
     }
+    if let Some(w) = curve::validity_warning(&rows) {
+        warnings.push(format!(
+            "our e(v0): {w}; the laws are fitted to those CoRs all the same"
+        ));
+    }
     if contact.dem_young() <= LIGGGHTS_MIN_YOUNG {
         warnings.push(format!(
             "Young's modulus {:.4e} Pa is at or below LIGGGHTS's lower limit {LIGGGHTS_MIN_YOUNG:e} \

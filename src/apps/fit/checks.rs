@@ -106,7 +106,40 @@ pub fn condition_on_nu(r: &mut FitResult) {
     }
 }
 
-/// Apply the checks to `r`: conditional moduli, goodness of fit and its warning, rising CoRs.
+/// Drops where the fitted material puts the model outside its validity
+/// ([`crate::model::validity`]): how many, and the largest `a_max / R`.
+pub fn validity(r: &FitResult) -> Option<String> {
+    use crate::model::validity::Validity;
+    use crate::solvers::{solve, SolveOptions, SolverKind};
+    let opts = SolveOptions::with(SolverKind::Auto, 1e-6);
+    let mut outside = 0usize;
+    let mut worst: f64 = 0.0;
+    for o in &r.data.observations {
+        let sphere = r.data.setups[o.setup].sphere;
+        let Ok(imp) = r.model.impact(sphere, o.v0, &r.values) else {
+            continue;
+        };
+        let Ok(out) = solve(&imp, &opts) else {
+            continue;
+        };
+        let v = Validity::of(&imp, &out);
+        if !v.warnings.is_empty() {
+            outside += 1;
+            worst = worst.max(v.contact_radius_ratio);
+        }
+    }
+    (outside > 0).then(|| {
+        format!(
+            "{outside} of {} drops lie outside the model's validity with the fitted material \
+             (a_max/R up to {worst:.3}; `run --json` on such a drop says why): the fit treats \
+             them as if it applied",
+            r.data.observations.len()
+        )
+    })
+}
+
+/// Apply the checks to `r`: conditional moduli, goodness of fit and its warning, rising CoRs,
+/// drops outside the model's validity.
 pub fn apply(r: &mut FitResult) {
     condition_on_nu(r);
     r.goodness = goodness(r);
@@ -118,6 +151,7 @@ pub fn apply(r: &mut FitResult) {
         ));
     }
     r.warnings.extend(rising_cor(&r.data));
+    r.warnings.extend(validity(r));
     if let Some(nu) = r.conditional_on_nu {
         r.verdict = format!(
             "{}; the moduli hold only for nu = {nu:.4}",
