@@ -177,13 +177,13 @@ impl Impact {
                 return Err(crate::Error::NonFinite { what, value: v });
             }
         }
-        if let Some(g) = imp.groups() {
-            if !g.p3.is_finite() {
-                return Err(crate::Error::NonFinite {
-                    what: "p3",
-                    value: g.p3,
-                });
-            }
+        if let Some(g) = imp.groups()
+            && !g.p3.is_finite()
+        {
+            return Err(crate::Error::NonFinite {
+                what: "p3",
+                value: g.p3,
+            });
         }
         // the series the solvers get: every modulus and time finite and positive in canonical
         // units (extreme times or moduli can underflow or overflow when scaled)

@@ -242,12 +242,11 @@ pub fn fit(data: &DmaData, opts: &PronyOptions) -> Result<PronyReport> {
                 ));
             }
             pairs.push((i, i + 1, p));
-            if i + 2 < n {
-                if let Some(p2) = shift::pairwise_shift(a, &logs[i + 2]) {
-                    if p2.rms <= 2.0 * p.rms.max(POOR_OVERLAP_RMS) {
-                        pairs.push((i, i + 2, p2));
-                    }
-                }
+            if i + 2 < n
+                && let Some(p2) = shift::pairwise_shift(a, &logs[i + 2])
+                && p2.rms <= 2.0 * p.rms.max(POOR_OVERLAP_RMS)
+            {
+                pairs.push((i, i + 2, p2));
             }
         }
         log_a = shift::global_shifts(n, reference, &pairs);
@@ -306,14 +305,14 @@ pub fn fit(data: &DmaData, opts: &PronyOptions) -> Result<PronyReport> {
         }
         law = Some(f);
     } else if n > 1 {
-        if let Some(t) = opts.t_ref {
-            if (t - temps[reference]).abs() > 1e-9 {
-                warnings.push(format!(
-                    "--shift none: the master curve refers to the isotherm at {} °C, not to \
+        if let Some(t) = opts.t_ref
+            && (t - temps[reference]).abs() > 1e-9
+        {
+            warnings.push(format!(
+                "--shift none: the master curve refers to the isotherm at {} °C, not to \
                      --t-ref {t} °C",
-                    temps[reference]
-                ));
-            }
+                temps[reference]
+            ));
         }
         t_ref = Some(temps[reference]);
     } else if opts.shift != LawKind::None && !temps.is_empty() {

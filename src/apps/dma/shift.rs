@@ -121,10 +121,10 @@ pub fn pairwise_shift(a: &LogIsotherm, b: &LogIsotherm) -> Option<PairShift> {
     let mut best: Option<(f64, f64)> = None;
     for k in 0..=n {
         let d = lo + (hi - lo) * k as f64 / n.max(1) as f64;
-        if let Some(m) = valid(d) {
-            if best.is_none_or(|(_, bm)| m < bm) {
-                best = Some((d, m));
-            }
+        if let Some(m) = valid(d)
+            && best.is_none_or(|(_, bm)| m < bm)
+        {
+            best = Some((d, m));
         }
     }
     let (d0, m0) = best?;

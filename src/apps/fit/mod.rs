@@ -356,10 +356,10 @@ impl<'a> Ctx<'a> {
                 continue;
             }
             bins.push(bin);
-            if let Ok(m) = self.scout(self.coords(v), moving) {
-                if !best.as_ref().is_some_and(|b| b.0 <= m.0) {
-                    best = Some(m);
-                }
+            if let Ok(m) = self.scout(self.coords(v), moving)
+                && !best.as_ref().is_some_and(|b| b.0 <= m.0)
+            {
+                best = Some(m);
             }
         }
         best
@@ -383,10 +383,10 @@ impl<'a> Ctx<'a> {
         };
         let (p, report) = lm.minimize(problem);
         let values = self.values(&p.coords);
-        if let Some(e) = p.failure.into_inner() {
-            if !report.termination.was_successful() {
-                return Err(e);
-            }
+        if let Some(e) = p.failure.into_inner()
+            && !report.termination.was_successful()
+        {
+            return Err(e);
         }
         if matches!(
             report.termination,

@@ -208,10 +208,10 @@ pub fn map_svg(path: &Path, f: &Field, style: &MapStyle) -> Result<()> {
                     )))
                     .map_err(|x| e(&x))?;
             }
-            if let Some(longest) = lines.iter().max_by(|a, b| length(a).total_cmp(&length(b))) {
-                if let Some(m) = midpoint(longest) {
-                    labels.push((iso.label.clone(), m));
-                }
+            if let Some(longest) = lines.iter().max_by(|a, b| length(a).total_cmp(&length(b)))
+                && let Some(m) = midpoint(longest)
+            {
+                labels.push((iso.label.clone(), m));
             }
         }
         for (text, (x, y)) in labels {
