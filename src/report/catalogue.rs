@@ -1,7 +1,8 @@
 //! The one catalogue of validation and benchmark cases, shared by the tests, the benches, the
 //! `validate` and `bench` commands and VALIDATION.md. Every case is a point of the paper's
 //! dimensionless space (Eq. 11) with its regime; reference values come from the independent
-//! theory ([`crate::solvers::theory`]) at run time and from the committed files in `reference/`.
+//! theory ([`crate::solvers::theory`]) at run time, from the committed files in `reference/` and,
+//! for each impact case, from its expected values ([`Case::expected`], `report::expected`).
 
 use crate::error::Result;
 use crate::model::bodies::{Body, BodyMaterial, Side, TwoBodies};

@@ -4,6 +4,7 @@
 
 pub mod bench;
 pub mod catalogue;
+pub mod expected;
 pub mod external;
 pub mod figures;
 pub mod markdown;
