@@ -70,7 +70,9 @@ fn nu_fixed_finds_the_basin_of_the_truth() {
     assert!(r.conditional_on_nu.is_none());
     let g = r.goodness.unwrap();
     assert!(g.p_value > 0.01 && g.dof == 17, "{g:?}");
-    assert!(r.warnings.is_empty(), "{:?}", r.warnings);
+    // the model fits; the faster drops (a_max/R up to 0.48 at 3 m/s) lie outside its validity
+    assert_eq!(r.warnings.len(), 1, "{:?}", r.warnings);
+    assert!(r.warnings[0].contains("4 of 10 drops lie outside the model's validity"));
 }
 
 #[test]

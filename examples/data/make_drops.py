@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Makes examples/data/drops.csv: a synthetic drop test of the default scene's steel ball on its
-elastomer (g_inf = 1 MPa, g_1 = 10 MPa, eta = 500 Pa s, nu = 0.49), ten drops from 0.3 to 3 m/s,
+elastomer (g_inf = 1 MPa, g_1 = 10 MPa, eta = 500 Pa s, nu = 0.49), ten drops from 0.2 to 1.2 m/s (inside the model's validity, a_max/R < 0.35),
 CoR and contact time with 1 % Gaussian noise (seed 7) and those standard deviations given.
 
 Run from the repository root after `cargo build --release`:
@@ -13,7 +13,7 @@ import subprocess
 import tempfile
 
 with tempfile.TemporaryDirectory() as out:
-    subprocess.run(["target/release/mdr-impact", "curve", "--v0", "0.3:3:10", "--out", out],
+    subprocess.run(["target/release/mdr-impact", "curve", "--v0", "0.2:1.2:10", "--out", out],
                    check=True, capture_output=True)
     rows = list(csv.DictReader(open(f"{out}/curve.csv")))
 rng = random.Random(7)
