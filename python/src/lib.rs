@@ -710,6 +710,8 @@ impl Scene {
                 options,
                 history_csv,
                 plot,
+                temperature: None,
+                shifts: Vec::new(),
             },
         })
     }

@@ -67,6 +67,18 @@ fn cmd_run(RunArgs { scene, json }: RunArgs) -> Outcome {
     if json {
         println!("{}", output::impact_json(&scene.impact, &outcome));
     } else {
+        for (table, log10_a) in &scene.shifts {
+            let log10_a = log10_a + 0.0; // no "-0.0000" at the reference temperature
+            let at = match scene.temperature {
+                Some(t) => format!("{t} °C"),
+                None => "its reference temperature".to_string(),
+            };
+            println!(
+                "{:<28}a_T = {:.6e} (log10 a_T = {log10_a:.4}) at {at}, {table}",
+                "time-temperature shift",
+                10f64.powf(log10_a)
+            );
+        }
         print!("{}", output::summary(&scene.impact, &outcome));
     }
     if outcome.history.is_some() {

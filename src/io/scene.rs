@@ -50,6 +50,7 @@ use std::path::{Path, PathBuf};
 use crate::error::{escape_text, Error, Result};
 use crate::model::bodies::{Body, BodyMaterial, Side, TwoBodies};
 use crate::model::impact::{Impact, Sphere};
+use crate::model::material::shift::ShiftLaw;
 use crate::model::material::{BulkInput, BulkProny, Material, ShearProny};
 use crate::solvers::{Resolution, SolveOptions, SolverKind};
 
@@ -93,6 +94,8 @@ struct RawBody {
 #[serde(deny_unknown_fields)]
 struct RawImpact {
     velocity: f64,
+    /// Temperature (°C) at which the materials' `[material.shift]` laws are evaluated.
+    temperature: Option<f64>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -108,6 +111,8 @@ struct RawMaterial {
     bulk: Option<RawBulk>,
     /// Mass density (kg/m^3): enables the quasi-static check of the answers.
     density: Option<f64>,
+    /// Time–temperature shift law (`wlf = {...}` or `arrhenius = {...}`).
+    shift: Option<ShiftLaw>,
 }
 
 /// `[material.shear]`: `g_inf` with `terms` or `file`, or `instantaneous` with `ratios`.
@@ -163,6 +168,11 @@ pub struct Scene {
     pub history_csv: Option<PathBuf>,
     /// Where to write the force-time plot (SVG), if requested.
     pub plot: Option<PathBuf>,
+    /// `[impact] temperature` (°C), when given.
+    pub temperature: Option<f64>,
+    /// The shift factor `log10 a_T` applied to each material with a `[material.shift]` law at
+    /// the scene's temperature (its `t_ref` when none is given), with the table it belongs to.
+    pub shifts: Vec<(String, f64)>,
 }
 
 impl Scene {
@@ -186,8 +196,14 @@ impl Scene {
                 None => Error::Scene(msg),
             }
         })?;
+        let temperature = raw.impact.temperature;
+        let mut shifts: Vec<(String, f64)> = Vec::new();
+        let mut at = Temperature {
+            celsius: temperature,
+            shifts: &mut shifts,
+        };
         let impact = match (&raw.body, &raw.sphere, &raw.material) {
-            (Some(bodies), None, None) => collision(bodies, raw.impact.velocity, base)?,
+            (Some(bodies), None, None) => collision(bodies, raw.impact.velocity, base, &mut at)?,
             (Some(_), _, _) => {
                 return Err(scene_error(
                     "[[body]] cannot be mixed with [sphere] or [material]: a collision gives \
@@ -197,7 +213,7 @@ impl Scene {
             }
             (None, Some(sphere), Some(material)) => {
                 let sphere = Sphere::new(sphere.mass, sphere.radius)?;
-                impact_of(sphere, raw.impact.velocity, material, base)?
+                impact_of(sphere, raw.impact.velocity, material, base, &mut at)?
             }
             (None, sphere, _) => {
                 let missing = if sphere.is_none() {
@@ -211,6 +227,15 @@ impl Scene {
                 )));
             }
         };
+        if let Some(t) = temperature
+            && shifts.is_empty()
+        {
+            return Err(scene_error(format!(
+                "[impact] temperature = {t}: no material has a [material.shift] law \
+                     (wlf = {{ c1, c2, t_ref }} or arrhenius = {{ activation_energy, t_ref }}), \
+                     so its relaxation times at another temperature are unknown"
+            )));
+        }
         let mut options = SolveOptions::default();
         if let Some(name) = &raw.solver.name {
             options.solver = name.parse::<SolverKind>().map_err(|_| {
@@ -247,6 +272,8 @@ impl Scene {
             options,
             history_csv,
             plot,
+            temperature,
+            shifts,
         })
     }
 
@@ -269,8 +296,14 @@ impl Scene {
 /// The impact of a one-sphere scene: the standard solid of `[material]` (`g_inf`, `g_1`,
 /// `eta`, `poisson` or `k_0`), or the general material of `[material.shear]` and
 /// `[material.bulk]`.
-fn impact_of(sphere: Sphere, velocity: f64, m: &RawMaterial, base: &Path) -> Result<Impact> {
-    match material_of(m, base)? {
+fn impact_of(
+    sphere: Sphere,
+    velocity: f64,
+    m: &RawMaterial,
+    base: &Path,
+    at: &mut Temperature,
+) -> Result<Impact> {
+    match material_of(m, base, "[material]", at)? {
         BodyMaterial::Viscoelastic(m) => Impact::new(sphere, velocity, m),
         BodyMaterial::Rigid => Err(scene_error(
             "[material] rigid = true: a rigid half-space under a rigid sphere has no \
@@ -281,7 +314,12 @@ fn impact_of(sphere: Sphere, velocity: f64, m: &RawMaterial, base: &Path) -> Res
 }
 
 /// The collision of exactly two `[[body]]` tables at the relative normal velocity `velocity`.
-fn collision(bodies: &[RawBody], velocity: f64, base: &Path) -> Result<Impact> {
+fn collision(
+    bodies: &[RawBody],
+    velocity: f64,
+    base: &Path,
+    at: &mut Temperature,
+) -> Result<Impact> {
     let [a, b] = bodies else {
         return Err(scene_error(format!(
             "[[body]]: found {} bod{}; a collision needs exactly two [[body]] tables",
@@ -289,8 +327,8 @@ fn collision(bodies: &[RawBody], velocity: f64, base: &Path) -> Result<Impact> {
             if bodies.len() == 1 { "y" } else { "ies" }
         )));
     };
-    let a = body_of(Side::A, a, base)?;
-    let b = body_of(Side::B, b, base)?;
+    let a = body_of(Side::A, a, base, at)?;
+    let b = body_of(Side::B, b, base, at)?;
     // the domain names what is wrong; the scene adds where (the text of earlier versions)
     let bodies = TwoBodies::new(a, b).map_err(|e| match e {
         Error::InvalidBodies { reason } => scene_error(format!("[[body]]: {reason}")),
@@ -300,7 +338,7 @@ fn collision(bodies: &[RawBody], velocity: f64, base: &Path) -> Result<Impact> {
 }
 
 /// One `[[body]]`; its errors name the body (`A` is the first table, `B` the second).
-fn body_of(side: Side, raw: &RawBody, base: &Path) -> Result<Body> {
+fn body_of(side: Side, raw: &RawBody, base: &Path, at: &mut Temperature) -> Result<Body> {
     let name = match side {
         Side::A => "[[body]] A (the first)",
         Side::B => "[[body]] B (the second)",
@@ -325,7 +363,13 @@ fn body_of(side: Side, raw: &RawBody, base: &Path) -> Result<Body> {
             )))
         }
         (Some(true), _) => BodyMaterial::Rigid,
-        (None, Some(m)) => material_of(m, base).map_err(named)?,
+        (None, Some(m)) => {
+            let table = match side {
+                Side::A => "[[body]] A [body.material]",
+                Side::B => "[[body]] B [body.material]",
+            };
+            material_of(m, base, table, at).map_err(named)?
+        }
         (None, None) => {
             return Err(named(scene_error(
                 "missing [body.material] (the keys of [material]) or rigid = true".into(),
@@ -356,15 +400,44 @@ fn has_material_keys(m: &RawMaterial) -> bool {
         || m.density.is_some()
 }
 
-/// The material of a `[material]` table: rigid, standard solid or general, with its `density`
-/// when given.
-fn material_of(m: &RawMaterial, base: &Path) -> Result<BodyMaterial> {
-    match (material_kind(m, base)?, m.density) {
-        (BodyMaterial::Viscoelastic(v), Some(rho)) => Ok(BodyMaterial::Viscoelastic(
-            v.with_density(rho).map_err(|e| e.at("[material]"))?,
-        )),
-        (b, _) => Ok(b),
+/// The scene's temperature and the shift factors applied so far.
+struct Temperature<'a> {
+    celsius: Option<f64>,
+    shifts: &'a mut Vec<(String, f64)>,
+}
+
+/// The material of a `[material]` table (named `table` in messages): rigid, standard solid or
+/// general, with its `density` when given, and shifted to the scene's temperature by its
+/// `[material.shift]` law (every relaxation time times `a_T`; at its `t_ref` when the scene
+/// gives no temperature).
+fn material_of(
+    m: &RawMaterial,
+    base: &Path,
+    table: &str,
+    at: &mut Temperature,
+) -> Result<BodyMaterial> {
+    let BodyMaterial::Viscoelastic(mut v) = material_kind(m, base)? else {
+        if m.shift.is_some() || m.density.is_some() {
+            return Err(scene_error(format!(
+                "{table}: a rigid material has no shift or density"
+            )));
+        }
+        return Ok(BodyMaterial::Rigid);
+    };
+    if let Some(rho) = m.density {
+        v = v.with_density(rho).map_err(|e| e.at(table.to_string()))?;
     }
+    if let Some(law) = m.shift {
+        let t = at.celsius.unwrap_or(law.t_ref());
+        let log10_a = law
+            .log10_a(t)
+            .map_err(|e| e.at(format!("{table} shift at [impact] temperature")))?;
+        v = v
+            .time_shifted(10f64.powf(log10_a))
+            .map_err(|e| e.at(format!("{table} shift")))?;
+        at.shifts.push((table.to_string(), log10_a));
+    }
+    Ok(BodyMaterial::Viscoelastic(v))
 }
 
 /// [`material_of`] without the density.

@@ -1,0 +1,122 @@
+//! Temperature in scenes: `[material.shift]` (WLF or Arrhenius) and `[impact] temperature`
+//! multiply every relaxation time by `a_T` (thermorheological simplicity); the shift in a scene
+//! equals the hand-shifted Prony series to the last bit.
+
+mod common;
+
+use common::run;
+use mdr_impact::io::scene::Scene;
+use mdr_impact::model::material::shift::ShiftLaw;
+use mdr_impact::solve;
+
+const TAUS: [f64; 2] = [1.0e-5, 1.0e-3];
+
+fn scene(taus: [f64; 2], temperature: Option<f64>, shift: bool) -> String {
+    let mut s = format!(
+        "[sphere]\nmass = 4.11e-3\nradius = 5.0e-3\n\n[impact]\nvelocity = 1.0\n{}\n\
+         [material.shear]\ng_inf = 1.0e6\nterms = [[5.0e6, {:?}], [2.0e6, {:?}]]\n\n\
+         [material.bulk]\nk_inf = 1.0e9\nterms = [[5.0e8, {:?}]]\n",
+        temperature.map_or(String::new(), |t| format!("temperature = {t:?}\n")),
+        taus[0],
+        taus[1],
+        3.0 * taus[0],
+    );
+    if shift {
+        s.push_str("\n[material.shift]\nwlf = { c1 = 8.86, c2 = 101.6, t_ref = 25.0 }\n");
+    }
+    s
+}
+
+fn cor(text: &str) -> f64 {
+    let sc = Scene::parse(text).unwrap();
+    solve(&sc.impact, &sc.options).unwrap().cor
+}
+
+#[test]
+fn the_shift_in_a_scene_equals_the_hand_shifted_series_to_the_bit() {
+    let law = ShiftLaw::wlf(8.86, 101.6, 25.0).unwrap();
+    for t in [-20.0, 0.0, 25.0, 60.0] {
+        let a = 10f64.powf(law.log10_a(t).unwrap());
+        let shifted = cor(&scene(TAUS, Some(t), true));
+        let hand = cor(&scene([TAUS[0] * a, TAUS[1] * a], None, false));
+        assert_eq!(
+            shifted.to_bits(),
+            hand.to_bits(),
+            "T = {t}: {shifted} vs {hand}"
+        );
+        let sc = Scene::parse(&scene(TAUS, Some(t), true)).unwrap();
+        assert_eq!(sc.shifts.len(), 1);
+        assert_eq!(sc.shifts[0].1, law.log10_a(t).unwrap());
+    }
+    // colder is slower: the material is glassier at 1 m/s, so the CoR rises
+    assert!(cor(&scene(TAUS, Some(-20.0), true)) > cor(&scene(TAUS, Some(25.0), true)));
+    // without a temperature the law's t_ref: a_T = 1, the unshifted material
+    assert_eq!(
+        cor(&scene(TAUS, None, true)).to_bits(),
+        cor(&scene(TAUS, None, false)).to_bits()
+    );
+}
+
+#[test]
+fn bad_temperatures_are_refused_naming_the_key() {
+    // no law to shift with
+    let e = Scene::parse(&scene(TAUS, Some(0.0), false))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("[impact] temperature") && e.contains("[material.shift]"),
+        "{e}"
+    );
+    // at or below t_ref - c2, the WLF singularity
+    let e = Scene::parse(&scene(TAUS, Some(25.0 - 101.6), true))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("temperature"), "{e}");
+    // an unknown law
+    let bad = scene(TAUS, Some(0.0), false) + "\n[material.shift]\nvft = { a = 1.0 }\n";
+    assert!(Scene::parse(&bad).is_err());
+}
+
+#[test]
+fn run_prints_the_shift_factor() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("s.toml"), scene(TAUS, Some(0.0), true)).unwrap();
+    let o = run(&["run", "s.toml"], dir.path());
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.starts_with(
+            "time-temperature shift      a_T = 7.791928e2 (log10 a_T = 2.8916) at 0 °C"
+        ),
+        "{text}"
+    );
+}
+
+/// `prony`'s material.toml with a sphere and a temperature is a scene.
+#[test]
+fn the_material_of_prony_runs_at_a_temperature() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = tempfile::tempdir().unwrap();
+    let data = root.join("scenes/dma_example.csv");
+    let o = run(
+        &["prony", data.to_str().unwrap(), "--out", "dma"],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let material = std::fs::read_to_string(dir.path().join("dma/material.toml")).unwrap();
+    assert!(material.contains("[material.shift]"), "{material}");
+    let mut cors = Vec::new();
+    for t in [0.0, 25.0, 60.0] {
+        let text = format!(
+            "[sphere]\nmass = 4.11e-3\nradius = 5.0e-3\n\n[impact]\nvelocity = 1.0\n\
+             temperature = {t:?}\n\n{material}"
+        );
+        std::fs::write(dir.path().join("s.toml"), text).unwrap();
+        let o = run(&["run", "s.toml", "--json"], dir.path());
+        assert!(o.status.success(), "{}", common::stderr(&o));
+        let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        cors.push(j["cor"].as_f64().unwrap());
+    }
+    assert!(cors.iter().all(|c| *c > 0.0 && *c < 1.0), "{cors:?}");
+    assert!(cors[0] != cors[1] && cors[1] != cors[2], "{cors:?}");
+}
