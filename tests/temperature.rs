@@ -120,3 +120,66 @@ fn the_material_of_prony_runs_at_a_temperature() {
     assert!(cors.iter().all(|c| *c > 0.0 && *c < 1.0), "{cors:?}");
     assert!(cors[0] != cors[1] && cors[1] != cors[2], "{cors:?}");
 }
+
+/// `curve --temperature`: one row per temperature, each the CoR `run` gives at that
+/// temperature, the header of the issue, a plot; with `--v0` a usage error (exit 2); on a scene
+/// without a shift law a one-line error and no files.
+#[test]
+fn curve_over_temperature() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("s.toml"), scene(TAUS, Some(0.0), true)).unwrap();
+    let o = run(
+        &["curve", "s.toml", "--temperature", "-10:50:4"],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let csv = std::fs::read_to_string(dir.path().join("out/curve.csv")).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next(),
+        Some("temperature,cor,contact_time,max_force,max_compression")
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 4);
+    for (r, t) in rows.iter().zip([-10.0, 10.0, 30.0, 50.0]) {
+        assert_eq!(r[0], t);
+        assert_eq!(r[1].to_bits(), cor(&scene(TAUS, Some(t), true)).to_bits());
+    }
+    assert!(std::fs::read_to_string(dir.path().join("out/curve.svg"))
+        .unwrap()
+        .contains("<svg"));
+    let both = run(
+        &[
+            "curve",
+            "s.toml",
+            "--temperature",
+            "0:50:4",
+            "--v0",
+            "1:2:3",
+        ],
+        dir.path(),
+    );
+    assert_eq!(both.status.code(), Some(2));
+    std::fs::write(dir.path().join("plain.toml"), scene(TAUS, None, false)).unwrap();
+    let o = run(
+        &[
+            "curve",
+            "plain.toml",
+            "--temperature",
+            "0:50:4",
+            "--out",
+            "none",
+        ],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(1));
+    assert!(common::stderr(&o).contains("[material.shift]"));
+    assert!(!dir.path().join("none").exists());
+    for bad in ["0:50", "50:0:4", "0:50:1", "-300:0:4", "a:b:c"] {
+        let o = run(&["curve", "s.toml", "--temperature", bad], dir.path());
+        assert_eq!(o.status.code(), Some(1), "{bad}");
+        assert!(common::stderr(&o).contains("--temperature"), "{bad}");
+    }
+}

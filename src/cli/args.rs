@@ -135,8 +135,16 @@ pub struct CurveArgs {
     /// [output] are not.
     pub scene: Option<PathBuf>,
     /// Velocities MIN:MAX:N in m/s (0 < MIN < MAX, 2 <= N <= 100000).
-    #[arg(long, allow_hyphen_values = true)]
-    pub v0: String,
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        required_unless_present = "temperature"
+    )]
+    pub v0: Option<String>,
+    /// Temperatures MIN:MAX:N in °C at the scene's velocity instead of velocities (the
+    /// scene's materials need a [material.shift] law); not together with --v0.
+    #[arg(long, allow_hyphen_values = true, conflicts_with_all = ["v0", "log"])]
+    pub temperature: Option<String>,
     /// Log-spaced velocities (and a log velocity axis) instead of linear.
     #[arg(long)]
     pub log: bool,

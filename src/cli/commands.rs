@@ -96,10 +96,16 @@ fn cmd_curve(
     CurveArgs {
         scene,
         v0,
+        temperature,
         log,
         out,
     }: CurveArgs,
 ) -> Outcome {
+    if let Some(t) = temperature {
+        return cmd_curve_temperature(scene.as_deref(), &t, &out);
+    }
+    // clap requires --v0 without --temperature
+    let v0 = v0.unwrap_or_default();
     // the input is checked before the scene is read or anything solved
     let range = curve::VelocityRange::parse(&v0, log)?;
     let scene = scene_or_default(scene.as_deref())?;
@@ -108,6 +114,32 @@ fn cmd_curve(
     })?;
     let written = curve::write_outputs(&out, &c, log)?;
     print!("{}", curve::summary(&c, Some(&written)));
+    Ok(())
+}
+
+/// `curve --temperature`: the scene at its velocity over temperatures.
+fn cmd_curve_temperature(scene: Option<&Path>, spec: &str, out: &Path) -> Outcome {
+    use mdr_impact::apps::curve_temperature as ct;
+    let range = ct::TemperatureRange::parse(spec)?;
+    let (text, base, name) = match scene {
+        Some(p) => (
+            std::fs::read_to_string(p).map_err(|e| Error::io(p, e))?,
+            p.parent().unwrap_or(Path::new("")).to_path_buf(),
+            p.file_stem()
+                .map_or("scene".into(), |s| s.to_string_lossy().into_owned()),
+        ),
+        None => (
+            mdr_impact::io::scene::DEFAULT_SCENE.to_string(),
+            Default::default(),
+            "default scene".into(),
+        ),
+    };
+    let rows = with_progress(range.n as u64, "curve", |tick| {
+        ct::run(&text, &base, &range.values(), tick)
+    })?;
+    let title = format!("Coefficient of restitution against temperature: {name}");
+    let written = ct::write_outputs(out, &rows, &title)?;
+    print!("{}", ct::summary(&rows, Some(&written)));
     Ok(())
 }
 

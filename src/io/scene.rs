@@ -185,6 +185,12 @@ impl Scene {
     /// Parse and validate a scene from TOML text, reading Prony table files (`file = ...` in
     /// `[material.shear]` or `[material.bulk]`) relative to the folder `base`.
     pub fn parse_in(text: &str, base: &Path) -> Result<Self> {
+        Self::parse_at(text, base, None)
+    }
+
+    /// [`Scene::parse_in`] with `[impact] temperature` replaced by `temperature` (°C) when it is
+    /// `Some`: the scene at another temperature (its materials need a `[material.shift]` law).
+    pub fn parse_at(text: &str, base: &Path, temperature: Option<f64>) -> Result<Self> {
         let raw: RawScene = toml::from_str(text).map_err(|e| {
             // one line: toml's message spans several lines with a source excerpt
             let msg = escape_text(e.message().trim_end());
@@ -196,7 +202,7 @@ impl Scene {
                 None => Error::Scene(msg),
             }
         })?;
-        let temperature = raw.impact.temperature;
+        let temperature = temperature.or(raw.impact.temperature);
         let mut shifts: Vec<(String, f64)> = Vec::new();
         let mut at = Temperature {
             celsius: temperature,
