@@ -73,6 +73,7 @@ __all__ = [
     "curve",
     "dem",
     "impact",
+    "prony",
 ]
 
 
@@ -354,3 +355,41 @@ def dem(scene, v0, log=False, modulus="relaxed"):
     report["lammps"] = lammps
     report["liggghts"] = liggghts
     return report
+
+
+def prony(data, terms="auto", modulus="shear", nu=None, t_ref=None, shift="wlf", out=None):
+    """A Prony series and a shift law from DMA data (``mdr-impact prony``, docs/dma.md).
+
+    Parameters
+    ----------
+    data : str or path
+        CSV with ``frequency`` (Hz) or ``omega`` (rad/s), ``storage``, ``loss`` (Pa) and an
+        optional ``temperature`` (°C) column.
+    terms : "auto" or int, optional
+        At most this many Prony terms (default: as many as the data carry).
+    modulus : {"shear", "tensile"}, optional
+        Shear moduli G', G'' or tensile E', E'' (converted with ``nu``).
+    nu : float, optional
+        Poisson ratio of the tensile conversion and of the written bulk (default 0.5).
+    t_ref : float, optional
+        Reference temperature (°C); default: the isotherm nearest 25 °C.
+    shift : {"wlf", "arrhenius", "none"}, optional
+        The law fitted to the isotherms' shift factors.
+    out : str or path, optional
+        Folder for ``material.toml``, ``prony.csv``, ``master.csv`` and ``dma.svg``.
+
+    Returns
+    -------
+    dict
+        The command's JSON report: ``g_inf`` (Pa), ``terms`` (``[g_i, tau_i]``, Pa and s),
+        ``shift`` (the law, or None), ``log10_shift`` per temperature, ``rms_rel_error``,
+        ``warnings``.
+
+    Raises
+    ------
+    Error
+        (a ``ValueError``) with the command's message for bad data or options.
+    """
+    text = _core.prony_report(str(data), str(terms), str(modulus), nu, t_ref, str(shift),
+                              None if out is None else str(out))
+    return json.loads(text)

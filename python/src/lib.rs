@@ -1103,6 +1103,37 @@ fn dem_report(
     Ok((report.json(), report.lammps_text(), report.liggghts_text()))
 }
 
+/// `mdr-impact prony` on the DMA file `data` (the command's JSON report as text); with `out`,
+/// the command's files are written there too.
+#[pyfunction]
+#[pyo3(signature = (data, terms, modulus, nu, t_ref, shift, out))]
+#[allow(clippy::too_many_arguments)]
+fn prony_report(
+    py: Python<'_>,
+    data: std::path::PathBuf,
+    terms: &str,
+    modulus: &str,
+    nu: Option<f64>,
+    t_ref: Option<f64>,
+    shift: &str,
+    out: Option<std::path::PathBuf>,
+) -> PyResult<String> {
+    use mdr_impact::apps::dma;
+    let options = dma::PronyOptions {
+        data,
+        max_terms: ok(dma::parse_terms(terms))?,
+        modulus: ok(modulus.parse())?,
+        nu,
+        t_ref,
+        shift: ok(shift.parse())?,
+    };
+    let report = ok(py.detach(|| dma::run(&options)))?;
+    if let Some(dir) = out {
+        ok(dma::write_outputs(&dir, &report))?;
+    }
+    Ok(dma::json(&report).to_string())
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("Error", m.py().get_type::<Error>())?;
@@ -1115,6 +1146,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(curve_values, m)?)?;
     m.add_function(wrap_pyfunction!(catalogue_impacts, m)?)?;
     m.add_function(wrap_pyfunction!(dem_report, m)?)?;
+    m.add_function(wrap_pyfunction!(prony_report, m)?)?;
     m.add_class::<Prony>()?;
     m.add_class::<Material>()?;
     m.add_class::<GeneralMaterial>()?;

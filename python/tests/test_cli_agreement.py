@@ -133,3 +133,16 @@ def test_dem_matches_cli(cli, root, tmp_path):
         mi.dem(mi.Scene.load(path), "5:0.5")
     p = cli("dem", path, "--v0", "5:0.5", "--format", "json", check=False)
     assert p.stderr.strip() == f"error: {err.value}"
+
+
+def test_prony_equals_the_command(root, tmp_path, cli):
+    """`prony` gives the command's JSON report and files."""
+    data = root / "scenes" / "dma_example.csv"
+    report = mi.prony(data, out=tmp_path / "py")
+    o = cli("prony", str(data), "--json", "--out", str(tmp_path / "cli"))
+    assert report == json.loads(o.stdout)
+    assert (tmp_path / "py" / "material.toml").read_text() == \
+        (tmp_path / "cli" / "material.toml").read_text()
+    assert report["shift"]["kind"] == "wlf"
+    with pytest.raises(mi.Error, match="--terms"):
+        mi.prony(data, terms="zero")
