@@ -61,6 +61,7 @@
 mod analysis;
 pub mod checks;
 pub mod data;
+mod global;
 pub mod model;
 pub mod report;
 pub mod study;
@@ -75,7 +76,7 @@ use crate::model::impact::{Impact, Sphere};
 use crate::model::tolerances::{
     FIT_FD_STEP, FIT_LM_PATIENCE, FIT_LM_STARTS, FIT_LM_TOL, FIT_MAX_HALF_WIDTH,
     FIT_NULL_COMPONENT, FIT_NULL_RATIO, FIT_PROFILE_STEP, FIT_PROFILE_STEPS, FIT_RTOL,
-    FIT_SCOUT_PATIENCE, FIT_SCOUT_TOL, FIT_SCREEN_RTOL,
+    FIT_SCREEN_RTOL,
 };
 use crate::solvers::{solve, SolveOptions, SolverKind};
 use analysis::analyse;
@@ -317,54 +318,6 @@ impl<'a> Ctx<'a> {
 
     /// Levenberg–Marquardt from `coords` over the coordinates `moving` (the others held):
     /// the misfit (SSR) and parameter values at the end.
-    /// A cheap look into the basin of `coords`: a few Levenberg–Marquardt steps with forward
-    /// solves at [`FIT_SCREEN_RTOL`]; the misfit there (at that rtol) and the values reached.
-    fn scout(&self, coords: Vec<f64>, moving: &[usize]) -> Result<(f64, Vec<f64>)> {
-        self.lm_rtol.set(FIT_SCREEN_RTOL);
-        let lm = LevenbergMarquardt::new()
-            .with_ftol(FIT_SCOUT_TOL)
-            .with_xtol(FIT_SCOUT_TOL)
-            .with_gtol(FIT_SCOUT_TOL)
-            .with_patience(FIT_SCOUT_PATIENCE);
-        let problem = LmProblem {
-            ctx: self,
-            coords,
-            moving: moving.to_vec(),
-            failure: RefCell::new(None),
-        };
-        let (p, _) = lm.minimize(problem);
-        self.lm_rtol.set(FIT_RTOL);
-        let values = self.values(&p.coords);
-        let s = ssr(&self.residuals(&values, FIT_SCREEN_RTOL)?);
-        if !s.is_finite() {
-            return Err(Error::NonFinite {
-                what: "fit misfit",
-                value: s,
-            });
-        }
-        Ok((s, values))
-    }
-
-    /// The best scouted point ([`Ctx::scout`]) from the best screened point of every decade of
-    /// the stiffness ratio `p2` among `points` (sorted best first), `moving` free.
-    fn scout_bins(&self, points: &[&Vec<f64>], moving: &[usize]) -> Option<(f64, Vec<f64>)> {
-        let mut bins: Vec<i64> = Vec::new();
-        let mut best: Option<(f64, Vec<f64>)> = None;
-        for v in points {
-            let bin = stiffness_ratio(self.model, v).log10().round() as i64;
-            if bins.contains(&bin) {
-                continue;
-            }
-            bins.push(bin);
-            if let Ok(m) = self.scout(self.coords(v), moving)
-                && !best.as_ref().is_some_and(|b| b.0 <= m.0)
-            {
-                best = Some(m);
-            }
-        }
-        best
-    }
-
     fn minimise(&self, coords: Vec<f64>, moving: &[usize]) -> Result<(f64, Vec<f64>)> {
         if moving.is_empty() {
             let values = self.values(&coords);
@@ -763,15 +716,6 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
     let mut result = analyse(&ctx, best, &probes, fixed, &free, &moving)?;
     checks::apply(&mut result);
     Ok(result)
-}
-
-/// `p2 = g_inf / (sum of the relaxing shear moduli)` of the parameter `values`.
-fn stiffness_ratio(model: &Model, values: &[f64]) -> f64 {
-    let relaxing: f64 = match model.kind {
-        ModelKind::StandardSolid => model.get(values, Parameter::G1),
-        ModelKind::Prony { n } => (1..=n).map(|i| model.get(values, Parameter::Term(i))).sum(),
-    };
-    model.get(values, Parameter::GInf) / relaxing
 }
 
 /// The weighted sum of squared residuals of `data` for the parameter `values` (forward solves at

@@ -1,0 +1,75 @@
+//! The global stage of the fit: short Levenberg–Marquardt runs that scout the basin of every
+//! decade of the stiffness ratio `p2`, so that the full minimisations also start in basins away
+//! from the best screened points (the Kelvin corner `p2 -> 0` attracts those when `nu` is near
+//! 0.5).
+
+use std::cell::RefCell;
+
+use levenberg_marquardt::LevenbergMarquardt;
+
+use super::{ssr, Ctx, LmProblem, Model, ModelKind, Parameter};
+use crate::error::{Error, Result};
+use crate::model::tolerances::{FIT_RTOL, FIT_SCOUT_PATIENCE, FIT_SCOUT_TOL, FIT_SCREEN_RTOL};
+
+impl Ctx<'_> {
+    /// A cheap look into the basin of `coords`: a few Levenberg–Marquardt steps with forward
+    /// solves at [`FIT_SCREEN_RTOL`]; the misfit there (at that rtol) and the values reached.
+    pub(super) fn scout(&self, coords: Vec<f64>, moving: &[usize]) -> Result<(f64, Vec<f64>)> {
+        self.lm_rtol.set(FIT_SCREEN_RTOL);
+        let lm = LevenbergMarquardt::new()
+            .with_ftol(FIT_SCOUT_TOL)
+            .with_xtol(FIT_SCOUT_TOL)
+            .with_gtol(FIT_SCOUT_TOL)
+            .with_patience(FIT_SCOUT_PATIENCE);
+        let problem = LmProblem {
+            ctx: self,
+            coords,
+            moving: moving.to_vec(),
+            failure: RefCell::new(None),
+        };
+        let (p, _) = lm.minimize(problem);
+        self.lm_rtol.set(FIT_RTOL);
+        let values = self.values(&p.coords);
+        let s = ssr(&self.residuals(&values, FIT_SCREEN_RTOL)?);
+        if !s.is_finite() {
+            return Err(Error::NonFinite {
+                what: "fit misfit",
+                value: s,
+            });
+        }
+        Ok((s, values))
+    }
+
+    /// The best scouted point ([`Ctx::scout`]) from the best screened point of every decade of
+    /// the stiffness ratio `p2` among `points` (sorted best first), `moving` free.
+    pub(super) fn scout_bins(
+        &self,
+        points: &[&Vec<f64>],
+        moving: &[usize],
+    ) -> Option<(f64, Vec<f64>)> {
+        let mut bins: Vec<i64> = Vec::new();
+        let mut best: Option<(f64, Vec<f64>)> = None;
+        for v in points {
+            let bin = stiffness_ratio(self.model, v).log10().round() as i64;
+            if bins.contains(&bin) {
+                continue;
+            }
+            bins.push(bin);
+            if let Ok(m) = self.scout(self.coords(v), moving)
+                && !best.as_ref().is_some_and(|b| b.0 <= m.0)
+            {
+                best = Some(m);
+            }
+        }
+        best
+    }
+}
+
+/// `p2 = g_inf / (sum of the relaxing shear moduli)` of the parameter `values`.
+pub(super) fn stiffness_ratio(model: &Model, values: &[f64]) -> f64 {
+    let relaxing: f64 = match model.kind {
+        ModelKind::StandardSolid => model.get(values, Parameter::G1),
+        ModelKind::Prony { n } => (1..=n).map(|i| model.get(values, Parameter::Term(i))).sum(),
+    };
+    model.get(values, Parameter::GInf) / relaxing
+}
