@@ -153,6 +153,7 @@ pub fn svg(path: &Path, rows: &[TemperatureRow], title: &str) -> Result<String> 
         y_label: "coefficient of restitution e".into(),
         y_range: (0.0, COR_AXIS_TOP),
         lines,
+        shaded: Default::default(),
     };
     panels_svg(
         path,

@@ -108,96 +108,24 @@ pub type CorLine = (String, Vec<(f64, f64)>, RGBColor, u32);
 
 /// The SVG text of a chart of `e` (0 to [`COR_AXIS_TOP`]) against `v0` from `x0` to `x1` (m/s,
 /// logarithmic axis with `log`), the `lines` drawn in order and named in a legend at the lower
-/// left. Rendered in memory only; `path` names the file in errors.
+/// left, over the `shaded` velocity spans. Rendered in memory only; `path` names the file in
+/// errors. One panel of [`panels_svg`].
 pub fn cor_chart_svg(
     path: &Path,
     title: &str,
-    (x0, x1): (f64, f64),
+    span: (f64, f64),
     log: bool,
     lines: &[CorLine],
     shaded: &Shaded,
 ) -> Result<String> {
-    type Chart<'a, 'b, X> =
-        ChartContext<'a, SVGBackend<'b>, Cartesian2d<X, plotters::coord::types::RangedCoordf64>>;
-    fn draw<'a, 'b: 'a, X>(
-        path: &Path,
-        chart: &mut Chart<'a, 'b, X>,
-        lines: &[CorLine],
-        shaded: &Shaded,
-    ) -> Result<()>
-    where
-        X: Ranged<ValueType = f64> + plotters::coord::ranged1d::ValueFormatter<f64>,
-    {
-        let e = |e: &dyn std::fmt::Display| Error::io(path, e);
-        chart
-            .configure_mesh()
-            .x_desc("impact velocity v0 (m/s)")
-            .y_desc("coefficient of restitution e")
-            .draw()
-            .map_err(|x| e(&x))?;
-        if !shaded.spans.is_empty() {
-            let fill = RGBColor(230, 80, 60).mix(0.15).filled();
-            chart
-                .draw_series(
-                    shaded
-                        .spans
-                        .iter()
-                        .map(|&(a, b)| Rectangle::new([(a, 0.0), (b, COR_AXIS_TOP)], fill)),
-                )
-                .map_err(|x| e(&x))?
-                .label(shaded.label.as_str())
-                .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 18, y + 5)], fill));
-        }
-        for (name, pts, color, width) in lines {
-            let style = color.stroke_width(*width);
-            chart
-                .draw_series(LineSeries::new(pts.iter().copied(), style))
-                .map_err(|x| e(&x))?
-                .label(name.as_str())
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
-        }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::LowerLeft)
-            .border_style(BLACK)
-            .background_style(WHITE.mix(0.85))
-            .draw()
-            .map_err(|x| e(&x))?;
-        Ok(())
-    }
-
-    if !(x0 < x1) {
-        return Err(Error::NotSupported {
-            solver: "plot",
-            what: "a curve needs at least two velocities".into(),
-        }
-        .at(path.display().to_string()));
-    }
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (900, 560)).into_drawing_area();
-        let e = |e: &dyn std::fmt::Display| Error::io(path, e);
-        root.fill(&WHITE).map_err(|x| e(&x))?;
-        let mut builder = ChartBuilder::on(&root);
-        builder
-            .caption(title, ("sans-serif", 22))
-            .margin(12)
-            .x_label_area_size(44)
-            .y_label_area_size(70);
-        if log {
-            let mut chart = builder
-                .build_cartesian_2d((x0..x1).log_scale(), 0.0..COR_AXIS_TOP)
-                .map_err(|x| e(&x))?;
-            draw(path, &mut chart, lines, shaded)?;
-        } else {
-            let mut chart = builder
-                .build_cartesian_2d(x0..x1, 0.0..COR_AXIS_TOP)
-                .map_err(|x| e(&x))?;
-            draw(path, &mut chart, lines, shaded)?;
-        }
-        root.present().map_err(|x| e(&x))?;
-    }
-    Ok(svg)
+    let panel = Panel {
+        caption: title.to_string(),
+        y_label: "coefficient of restitution e".into(),
+        y_range: (0.0, COR_AXIS_TOP),
+        lines: lines.to_vec(),
+        shaded: shaded.clone(),
+    };
+    panels_svg(path, span, log, "impact velocity v0 (m/s)", &[panel])
 }
 
 /// Velocity spans shaded on a CoR chart, with their legend entry (no entry without spans).
@@ -233,6 +161,8 @@ pub struct Panel {
     pub y_range: (f64, f64),
     /// The lines, drawn in order and named in a legend.
     pub lines: Vec<CorLine>,
+    /// x spans shaded under the lines (none by default).
+    pub shaded: Shaded,
 }
 
 /// The SVG text of panels stacked vertically over one x axis from `x0` to `x1` (logarithmic
@@ -274,6 +204,22 @@ pub fn panels_svg(
                         .y_desc(panel.y_label.as_str())
                         .draw()
                         .map_err(|x| e(&x))?;
+                    if !panel.shaded.spans.is_empty() {
+                        let fill = RGBColor(230, 80, 60).mix(0.15).filled();
+                        chart
+                            .draw_series(
+                                panel
+                                    .shaded
+                                    .spans
+                                    .iter()
+                                    .map(|&(a, b)| Rectangle::new([(a, y0), (b, y1)], fill)),
+                            )
+                            .map_err(|x| e(&x))?
+                            .label(panel.shaded.label.as_str())
+                            .legend(move |(x, y)| {
+                                Rectangle::new([(x, y - 5), (x + 18, y + 5)], fill)
+                            });
+                    }
                     for (name, pts, color, width) in &panel.lines {
                         let style = color.stroke_width(*width);
                         chart

@@ -463,6 +463,7 @@ pub fn dem_svg(path: &Path, report: &DemReport) -> Result<String> {
             y_label: "coefficient of restitution e".into(),
             y_range: (0.0, COR_AXIS_TOP),
             lines,
+            shaded: Default::default(),
         },
         Panel {
             caption: format!(
@@ -472,6 +473,7 @@ pub fn dem_svg(path: &Path, report: &DemReport) -> Result<String> {
             y_label: "contact time (ms)".into(),
             y_range: (0.0, 1.08 * t_max),
             lines: time_lines,
+            shaded: Default::default(),
         },
     ];
     panels_svg(path, span, report.log, "impact velocity v0 (m/s)", &panels)
