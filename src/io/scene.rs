@@ -49,6 +49,7 @@ use std::path::{Path, PathBuf};
 
 use crate::error::{escape_text, Error, Result};
 use crate::model::bodies::{Body, BodyMaterial, Side, TwoBodies};
+use crate::model::geometry::{Cap, Shape};
 use crate::model::impact::{Impact, Sphere};
 use crate::model::material::shift::ShiftLaw;
 use crate::model::material::{BulkInput, BulkProny, Material, ShearProny};
@@ -62,6 +63,7 @@ pub const DEFAULT_SCENE: &str = include_str!("../../scenes/default.toml");
 #[serde(deny_unknown_fields)]
 struct RawScene {
     sphere: Option<RawSphere>,
+    indenter: Option<RawIndenter>,
     impact: RawImpact,
     material: Option<RawMaterial>,
     body: Option<Vec<RawBody>>,
@@ -76,6 +78,20 @@ struct RawScene {
 struct RawSphere {
     mass: f64,
     radius: f64,
+    /// `paraboloid` (Hertz, the default) or `sphere` (the exact cap).
+    profile: Option<String>,
+}
+
+/// `[indenter]`: a rigid impactor of any axisymmetric shape (docs/theory.md §11).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawIndenter {
+    mass: f64,
+    shape: String,
+    radius: Option<f64>,
+    half_angle_deg: Option<f64>,
+    exponent: Option<f64>,
+    coefficient: Option<f64>,
 }
 
 /// `[[body]]`: `mass` (kg, `inf` allowed) or `density` (kg/m^3), `radius` (m, `inf`: a wall),
@@ -86,6 +102,8 @@ struct RawBody {
     mass: Option<f64>,
     density: Option<f64>,
     radius: f64,
+    /// `paraboloid` (the default) or `sphere` (the exact cap; the gap adds the two profiles).
+    profile: Option<String>,
     rigid: Option<bool>,
     material: Option<RawMaterial>,
 }
@@ -208,28 +226,42 @@ impl Scene {
             celsius: temperature,
             shifts: &mut shifts,
         };
-        let impact = match (&raw.body, &raw.sphere, &raw.material) {
-            (Some(bodies), None, None) => collision(bodies, raw.impact.velocity, base, &mut at)?,
-            (Some(_), _, _) => {
+        let impact = match (&raw.body, &raw.sphere, &raw.indenter, &raw.material) {
+            (Some(bodies), None, None, None) => {
+                collision(bodies, raw.impact.velocity, base, &mut at)?
+            }
+            (Some(_), _, _, _) => {
                 return Err(scene_error(
-                    "[[body]] cannot be mixed with [sphere] or [material]: a collision gives \
-                     each body its own material ([body.material])"
+                    "[[body]] cannot be mixed with [sphere], [indenter] or [material]: a \
+                     collision gives each body its own material ([body.material])"
                         .into(),
                 ))
             }
-            (None, Some(sphere), Some(material)) => {
-                let sphere = Sphere::new(sphere.mass, sphere.radius)?;
-                impact_of(sphere, raw.impact.velocity, material, base, &mut at)?
+            (None, Some(_), Some(_), _) => {
+                return Err(scene_error(
+                    "give [sphere] or [indenter], not both ([indenter] with shape = \"sphere\" \
+                     or \"paraboloid\" is a sphere)"
+                        .into(),
+                ))
             }
-            (None, sphere, _) => {
-                let missing = if sphere.is_none() {
-                    "[sphere]"
+            (None, Some(sphere), None, Some(material)) => {
+                let shape = sphere_profile("[sphere]", sphere.profile.as_deref(), sphere.radius)?;
+                let sphere = Sphere::new(sphere.mass, sphere.radius)?;
+                impact_of(sphere, shape, raw.impact.velocity, material, base, &mut at)?
+            }
+            (None, None, Some(ind), Some(material)) => {
+                let (sphere, shape) = indenter_of(ind)?;
+                impact_of(sphere, shape, raw.impact.velocity, material, base, &mut at)?
+            }
+            (None, sphere, indenter, _) => {
+                let missing = if sphere.is_none() && indenter.is_none() {
+                    "[sphere] (or [indenter])"
                 } else {
                     "[material]"
                 };
                 return Err(scene_error(format!(
-                    "missing {missing}: give [sphere] and [material] (one sphere on a \
-                     half-space) or two [[body]] tables (a collision)"
+                    "missing {missing}: give [sphere] (or [indenter]) and [material] (one \
+                     impactor on a half-space) or two [[body]] tables (a collision)"
                 )));
             }
         };
@@ -304,19 +336,108 @@ impl Scene {
 /// `[material.bulk]`.
 fn impact_of(
     sphere: Sphere,
+    shape: Shape,
     velocity: f64,
     m: &RawMaterial,
     base: &Path,
     at: &mut Temperature,
 ) -> Result<Impact> {
     match material_of(m, base, "[material]", at)? {
-        BodyMaterial::Viscoelastic(m) => Impact::new(sphere, velocity, m),
+        BodyMaterial::Viscoelastic(m) => Impact::shaped(sphere, shape, velocity, m),
         BodyMaterial::Rigid => Err(scene_error(
             "[material] rigid = true: a rigid half-space under a rigid sphere has no \
              compliance; only a [[body]] of a collision can be rigid"
                 .into(),
         )),
     }
+}
+
+/// The shape named by a `profile` key: the paraboloid (default) or the exact sphere of `radius`.
+fn sphere_profile(table: &str, profile: Option<&str>, radius: f64) -> Result<Shape> {
+    match profile.unwrap_or("paraboloid") {
+        "paraboloid" => Ok(Shape::Paraboloid { radius }),
+        "sphere" => Ok(Shape::sphere(radius)),
+        other => Err(scene_error(format!(
+            "{table} profile = '{}': expected \"paraboloid\" (Hertz, the default) or \"sphere\" \
+             (the exact cap)",
+            escape_text(other)
+        ))),
+    }
+}
+
+/// The `[indenter]` table: its mass, a nominal sphere (the radius of a paraboloid or sphere;
+/// none, `inf`, for a cone, a power law or a flat punch) and its shape, with exactly the keys its
+/// shape needs.
+fn indenter_of(raw: &RawIndenter) -> Result<(Sphere, Shape)> {
+    let need = |key: &str, v: Option<f64>| {
+        v.ok_or_else(|| {
+            scene_error(format!(
+                "[indenter] shape = \"{}\" needs {key}",
+                escape_text(&raw.shape)
+            ))
+        })
+    };
+    let (shape, keys): (Shape, &[&str]) = match raw.shape.as_str() {
+        "paraboloid" => (
+            Shape::Paraboloid {
+                radius: need("radius (m)", raw.radius)?,
+            },
+            &["radius"],
+        ),
+        "sphere" => (Shape::sphere(need("radius (m)", raw.radius)?), &["radius"]),
+        "flat" => (
+            Shape::Flat {
+                radius: need("radius (m)", raw.radius)?,
+            },
+            &["radius"],
+        ),
+        "cone" => (
+            Shape::Cone {
+                half_angle_deg: need(
+                    "half_angle_deg (degrees between the axis and the face)",
+                    raw.half_angle_deg,
+                )?,
+            },
+            &["half_angle_deg"],
+        ),
+        "power-law" => (
+            Shape::PowerLaw {
+                exponent: need("exponent", raw.exponent)?,
+                coefficient: need("coefficient (m^(1 - exponent))", raw.coefficient)?,
+            },
+            &["exponent", "coefficient"],
+        ),
+        other => {
+            return Err(scene_error(format!(
+            "[indenter] shape = '{}': expected one of paraboloid, sphere, cone, power-law, flat",
+            escape_text(other)
+        )))
+        }
+    };
+    for (key, v) in [
+        ("radius", raw.radius),
+        ("half_angle_deg", raw.half_angle_deg),
+        ("exponent", raw.exponent),
+        ("coefficient", raw.coefficient),
+    ] {
+        if v.is_some() && !keys.contains(&key) {
+            return Err(scene_error(format!(
+                "[indenter] {key} does not apply to shape = \"{}\" (it takes {})",
+                escape_text(&raw.shape),
+                keys.join(", ")
+            )));
+        }
+    }
+    let shape = shape
+        .validated()
+        .map_err(|e| scene_error(format!("[indenter] {e}")))?;
+    // the nominal radius the validity checks compare with: a sphere's; a flat punch's radius
+    // is its shape, not a curvature
+    let sphere = match (shape, raw.radius) {
+        (Shape::Flat { .. }, _) | (_, None) => Sphere::without_radius(raw.mass)?,
+        (_, Some(r)) => Sphere::new(raw.mass, r)?,
+    };
+    Ok((sphere, shape))
 }
 
 /// The collision of exactly two `[[body]]` tables at the relative normal velocity `velocity`.
@@ -333,6 +454,17 @@ fn collision(
             if bodies.len() == 1 { "y" } else { "ies" }
         )));
     };
+    let caps = [(Side::A, a), (Side::B, b)].map(|(side, raw)| {
+        let table = match side {
+            Side::A => "[[body]] A (the first)",
+            Side::B => "[[body]] B (the second)",
+        };
+        sphere_profile(table, raw.profile.as_deref(), raw.radius).map(|s| Cap {
+            radius: raw.radius,
+            exact: matches!(s, Shape::Spheres { .. }),
+        })
+    });
+    let caps = [caps[0].clone()?, caps[1].clone()?];
     let a = body_of(Side::A, a, base, at)?;
     let b = body_of(Side::B, b, base, at)?;
     // the domain names what is wrong; the scene adds where (the text of earlier versions)
@@ -340,7 +472,12 @@ fn collision(
         Error::InvalidBodies { reason } => scene_error(format!("[[body]]: {reason}")),
         e => e,
     })?;
-    Impact::with_bodies(bodies, velocity)
+    let impact = Impact::with_bodies(bodies, velocity)?;
+    if caps.iter().any(|c| c.exact) {
+        impact.with_shape(Shape::Spheres { caps })
+    } else {
+        Ok(impact)
+    }
 }
 
 /// One `[[body]]`; its errors name the body (`A` is the first table, `B` the second).

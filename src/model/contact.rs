@@ -63,50 +63,7 @@ impl std::ops::Deref for CanonicalProny {
     }
 }
 
-/// The shape of the indenter, as the MDR sees it: the equivalent profile `g(x)` of the
-/// one-dimensional foundation, the contact radius at an indentation and back.
-///
-/// Today the paraboloid (the sphere of the Hertz theory); the axisymmetric indenters of MDR
-/// (exact sphere, cone, power law, flat punch) are further variants here, with their `g(x)`,
-/// `a(d)` and `d(a)`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
-pub enum Geometry {
-    /// The paraboloid `f(r) = r^2 / (2 R)`: `g(x) = x^2 / R`, `a = sqrt(R d)`.
-    Paraboloid {
-        /// Radius of curvature `R` (1 in canonical units).
-        radius: f64,
-    },
-}
-
-impl Geometry {
-    /// The canonical sphere, `R = 1`.
-    pub const UNIT_SPHERE: Geometry = Geometry::Paraboloid { radius: 1.0 };
-
-    /// The MDR equivalent profile `g(x)` at distance `x` from the axis (docs/theory.md, paper
-    /// Eq. 6).
-    pub fn profile(&self, x: f64) -> f64 {
-        match *self {
-            Geometry::Paraboloid { radius } => x * x / radius,
-        }
-    }
-    /// Contact radius `a(d)` at indentation `d`.
-    pub fn contact_radius(&self, d: f64) -> f64 {
-        match *self {
-            Geometry::Paraboloid { radius } => (radius * d).sqrt(),
-        }
-    }
-    /// Indentation `d(a)` at which the contact radius is `a` (`g(a)`).
-    pub fn indentation(&self, a: f64) -> f64 {
-        self.profile(a)
-    }
-    /// `1 / R` of a paraboloid: the factor of `x^2` in `g(x)`.
-    pub fn inverse_radius(&self) -> f64 {
-        match *self {
-            Geometry::Paraboloid { radius } => 1.0 / radius,
-        }
-    }
-}
+pub use crate::model::geometry::Geometry;
 
 /// The element network of the contact's material in canonical units, in the form the MDR
 /// integrates it; chosen by shape in this one place ([`Impact::contact`]).
@@ -163,7 +120,8 @@ impl Contact {
 }
 
 impl Impact {
-    /// The contact problem of this impact in canonical units: unit mass, the unit sphere,
+    /// The contact problem of this impact in canonical units: unit mass, the canonical shape
+    /// ([`Impact::canonical_geometry`]),
     /// [`Impact::canonical_relaxation`] and the element network, chosen by shape here: a
     /// deformable material of the standard solid's shape (half-space, or the one deformable body
     /// beside a rigid one) gets the network of Eq. (8); any other material its network built
@@ -191,7 +149,7 @@ impl Impact {
         };
         Ok(Contact {
             mass: 1.0,
-            geometry: Geometry::UNIT_SPHERE,
+            geometry: self.canonical_geometry(),
             g_eq: CanonicalProny(self.canonical_relaxation()),
             network,
             independent: Independent {

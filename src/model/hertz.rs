@@ -66,7 +66,10 @@ impl HertzImpact {
     pub fn relaxed(impact: &Impact) -> Result<Self> {
         Self::new(
             impact.sphere().mass(),
-            impact.sphere().radius(),
+            impact
+                .shape()
+                .tip_radius()
+                .unwrap_or(impact.sphere().radius()),
             impact.velocity(),
             impact.relaxed_effective_modulus(),
         )

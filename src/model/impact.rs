@@ -15,6 +15,7 @@
 
 use crate::error::{check, Error, Result};
 use crate::model::bodies::TwoBodies;
+use crate::model::geometry::Shape;
 pub use crate::model::material::Groups;
 use crate::model::material::{poles, Material, Prony, StandardSolid};
 
@@ -33,11 +34,19 @@ impl Sphere {
             radius: check("radius", radius, radius > 0.0, "0 < radius < inf (m)")?,
         })
     }
+    /// An impactor of `mass` (kg) without a radius (a cone or a power-law indenter): its
+    /// radius reads `inf`, and the validity checks that compare with it do not apply.
+    pub fn without_radius(mass: f64) -> Result<Self> {
+        Ok(Self {
+            mass: check("mass", mass, mass > 0.0, "0 < mass < inf (kg)")?,
+            radius: f64::INFINITY,
+        })
+    }
     /// Mass (kg).
     pub fn mass(&self) -> f64 {
         self.mass
     }
-    /// Radius (m).
+    /// Radius (m; `inf` for an impactor without one, [`Sphere::without_radius`]).
     pub fn radius(&self) -> f64 {
         self.radius
     }
@@ -92,6 +101,8 @@ impl Target {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Impact {
     sphere: Sphere,
+    /// The indenter's shape (the paraboloid of the sphere's radius unless set otherwise).
+    shape: Shape,
     velocity: f64,
     target: Target,
     /// `G_eq(t)` in SI (Pa, s).
@@ -119,8 +130,24 @@ impl Impact {
     /// assert!((a.p3 - b.p3).abs() < 1e-15 * b.p3);
     /// ```
     pub fn new(sphere: Sphere, velocity: f64, material: Material) -> Result<Self> {
+        let shape = Shape::Paraboloid {
+            radius: sphere.radius,
+        };
+        Self::shaped(sphere, shape, velocity, material)
+    }
+
+    /// An impactor of `sphere`'s mass with the shape `shape` (docs/theory.md §11) at `velocity`
+    /// (m/s) on a half-space of `material`; `sphere`'s radius is the nominal size the validity
+    /// checks compare with (`inf`: none, [`Sphere::without_radius`]).
+    pub fn shaped(sphere: Sphere, shape: Shape, velocity: f64, material: Material) -> Result<Self> {
         let equivalent = material.equivalent_relaxation()?;
-        Self::build(sphere, velocity, Target::HalfSpace(material), equivalent)
+        Self::build(
+            sphere,
+            shape.validated()?,
+            velocity,
+            Target::HalfSpace(material),
+            equivalent,
+        )
     }
 
     /// The same as [`Impact::new`] (kept for callers that name a general material so).
@@ -137,6 +164,9 @@ impl Impact {
         let equivalent = bodies.combined_relaxation().clone();
         Self::build(
             sphere,
+            Shape::Paraboloid {
+                radius: sphere.radius,
+            },
             velocity,
             Target::TwoBodies(Box::new(bodies)),
             equivalent,
@@ -147,13 +177,28 @@ impl Impact {
     pub fn at_velocity(&self, velocity: f64) -> Result<Self> {
         Self::build(
             self.sphere,
+            self.shape,
             velocity,
             self.target.clone(),
             self.equivalent.clone(),
         )
     }
 
-    fn build(sphere: Sphere, velocity: f64, target: Target, equivalent: Prony) -> Result<Self> {
+    /// The same impact with the indenter's shape `shape` (docs/theory.md §11; mass, velocity and
+    /// material unchanged). The sphere's radius stays the nominal size the validity checks use.
+    pub fn with_shape(mut self, shape: Shape) -> Result<Self> {
+        self.shape = shape.validated()?;
+        self.check_scales()?;
+        Ok(self)
+    }
+
+    fn build(
+        sphere: Sphere,
+        shape: Shape,
+        velocity: f64,
+        target: Target,
+        equivalent: Prony,
+    ) -> Result<Self> {
         let velocity = check(
             "velocity",
             velocity,
@@ -162,10 +207,18 @@ impl Impact {
         )?;
         let imp = Self {
             sphere,
+            shape,
             velocity,
             target,
             equivalent,
         };
+        imp.check_scales()?;
+        Ok(imp)
+    }
+
+    /// Refuse magnitudes whose canonical form leaves the f64 range (module docs).
+    fn check_scales(&self) -> Result<()> {
+        let imp = self;
         // Extreme magnitudes can leave the f64 range when scaled; refuse them here, loudly.
         let s = imp.scales();
         for (what, v) in [
@@ -200,7 +253,7 @@ impl Impact {
                 return Err(Error::NonFinite { what, value: v });
             }
         }
-        Ok(imp)
+        Ok(())
     }
 
     /// The impact in canonical units `m = R = v0 = G_inf = 1` with the given groups.
@@ -208,9 +261,14 @@ impl Impact {
         Self::new(Sphere::new(1.0, 1.0)?, 1.0, groups.canonical_material()?)
     }
 
-    /// The sphere.
+    /// The sphere: the indenter's mass and its nominal radius (the radius of its shape for a
+    /// paraboloid or an exact sphere).
     pub fn sphere(&self) -> Sphere {
         self.sphere
+    }
+    /// The indenter's shape.
+    pub fn shape(&self) -> &Shape {
+        &self.shape
     }
     /// Impact velocity `v0` (m/s).
     pub fn velocity(&self) -> f64 {
@@ -299,28 +357,38 @@ impl Impact {
     }
 
     /// Dimensionless groups, Eq. (11), of a half-space of the standard solid's shape
-    /// ([`StandardSolid::groups`]); `None` otherwise (a general material or two bodies have no
-    /// such three groups).
+    /// ([`StandardSolid::groups`]) hit by a paraboloid; `None` otherwise (a general material,
+    /// two bodies or another indenter shape have no such three groups).
     pub fn groups(&self) -> Option<Groups> {
+        if !matches!(self.shape, Shape::Paraboloid { .. }) {
+            return None;
+        }
         Some(self.standard_solid()?.groups(self.scales().time))
     }
 
-    /// Scales from canonical units to SI.
+    /// Scales from canonical units to SI ([`Shape::canonical`]; for the paraboloid
+    /// `L = (m v^2 / (G sqrt(R)))^(2/5)` and contact radius `sqrt(R L)`).
     pub fn scales(&self) -> Scales {
-        let (m, r, v) = (self.sphere.mass, self.sphere.radius, self.velocity);
+        let (m, v) = (self.sphere.mass, self.velocity);
         let g = self.target.g_inf();
-        // L = (m v^2 / (G sqrt(R)))^(2/5), computed in logs to survive extreme magnitudes.
-        let ln_l = 0.4 * (m.ln() + 2.0 * v.ln() - g.ln() - 0.5 * r.ln());
-        let length = ln_l.exp();
+        let (length, radius, _) = self.shape.canonical(m, v, g);
+        let ln_l = length.ln();
         Scales {
             length,
             time: (ln_l - v.ln()).exp(),
             force: (m.ln() + 2.0 * v.ln() - ln_l).exp(),
             energy: m * v * v,
             velocity: v,
-            radius: (0.5 * (r.ln() + ln_l)).exp(),
+            radius,
             modulus: g,
         }
+    }
+
+    /// The indenter's shape in canonical units ([`Shape::canonical`]).
+    pub fn canonical_geometry(&self) -> crate::model::geometry::Geometry {
+        self.shape
+            .canonical(self.sphere.mass, self.velocity, self.target.g_inf())
+            .2
     }
 
     /// Equivalent relaxation function in canonical units (moduli / `G_inf`, times / `L/v0`),

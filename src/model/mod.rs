@@ -5,6 +5,7 @@
 
 pub mod bodies;
 pub mod contact;
+pub mod geometry;
 pub mod hertz;
 pub mod impact;
 pub mod material;

@@ -23,6 +23,7 @@
 //!   [`QUASI_STATIC_MAX_WAVE_RATIO`] the answer warns. For a Hertz impact this ratio grows as
 //!   `(v0 / c_s)^(3/5)`, as does the share of the energy radiated as waves (Hunter 1957).
 
+use crate::model::geometry::Shape;
 use crate::model::impact::{Impact, Outcome};
 use crate::model::material::Material;
 
@@ -30,6 +31,16 @@ use crate::model::material::Material;
 /// exact sphere needs 5.3 % more force at the same contact radius ([`sphere_force_excess`]; 3.8 %
 /// at 0.3, 4.2 % at 0.315, where the default scene's ball is at 1 m/s).
 pub const PARABOLOID_MAX_CONTACT_RADIUS_RATIO: f64 = 0.35;
+
+/// `a_max / R` above which an exact sphere's contact is no longer small against the sphere: the
+/// half-space of the theory and small strains both fail (the exact cap itself holds to any
+/// radius; Segedin's solution assumes a half-space and linear strains).
+pub const EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO: f64 = 0.8;
+
+/// Slope of a cone's face, `1 / tan(θ)`, above which the small-slope assumption of the
+/// half-space solutions (Sneddon 1965) is warned about: `θ < 59°` (the Berkovich-equivalent
+/// cone, 70.3°, has 0.36).
+pub const CONE_MAX_SLOPE: f64 = 0.6;
 
 /// Transit time of shear waves over the contact diameter against the contact time, above
 /// which the quasi-static assumption is warned about.
@@ -71,7 +82,7 @@ pub fn sphere_indentation_excess(x: f64) -> f64 {
 }
 
 /// The radius against which the contact is measured: the sphere's, or for two bodies the
-/// smaller finite radius.
+/// smaller finite radius (`inf` for a cone, a power law or a flat punch, whose ratios are 0).
 fn reference_radius(impact: &Impact) -> f64 {
     match impact.bodies() {
         Some(b) => {
@@ -120,7 +131,30 @@ impl Validity {
         let indentation_ratio = outcome.max_indentation / r;
         let mut warnings = Vec::new();
         let x = contact_radius_ratio;
-        if x > PARABOLOID_MAX_CONTACT_RADIUS_RATIO {
+        let exact = match impact.shape() {
+            Shape::Spheres { caps } => caps
+                .iter()
+                .filter(|c| c.radius.is_finite())
+                .all(|c| c.exact),
+            _ => false,
+        };
+        if let Shape::Cone { half_angle_deg } = *impact.shape() {
+            let slope = 1.0 / half_angle_deg.to_radians().tan();
+            if slope > CONE_MAX_SLOPE {
+                warnings.push(format!(
+                    "the cone's face has the slope 1/tan({half_angle_deg} deg) = {slope:.2} \
+                     (more than {CONE_MAX_SLOPE}): the half-space solutions assume small surface \
+                     slopes, and a sharp cone strains the material far beyond the linear range"
+                ));
+            }
+        }
+        if exact && x > EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO {
+            warnings.push(format!(
+                "contact radius a_max/R = {x:.3} exceeds {EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO}: \
+                 the exact sphere is solved on a half-space with linear strains, and a contact \
+                 this wide is neither small against the ball nor of small strain"
+            ));
+        } else if !exact && x > PARABOLOID_MAX_CONTACT_RADIUS_RATIO {
             let differs = if x < 1.0 {
                 format!(
                     "at this contact radius an exact sphere needs {:.1} % more force and \

@@ -1,7 +1,7 @@
 //! Time–temperature superposition: the shift laws of a thermorheologically simple material
 //! ([`ShiftLaw`], the scene table `[material.shift]`), the shift factors of measured isotherms
 //! found from the data ([`pairwise_shift`], [`global_shifts`]) and the least-squares fit of a
-//! law to them ([`fit_law`]) (docs/theory.md §10 of the shared notes; docs/dma.md).
+//! law to them ([`fit_law`]) (docs/theory.md §11 of the shared notes; docs/dma.md).
 //!
 //! Sign convention: at temperature `T` every relaxation time is `tau_i(T) = a_T tau_i(T_ref)`,
 //! so an isotherm measured at angular frequency `omega` sits at the reduced frequency

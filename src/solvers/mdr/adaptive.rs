@@ -13,7 +13,7 @@ pub fn euler_step_bound(prony: &Prony, contact_radius: f64) -> f64 {
 /// Estimate the layout of an impact with coarse exponential-MDR runs, restarting with a
 /// rescaled grid when the first guess (the glassy Hertz impact) was far off.
 pub fn pilot(prony: &Prony) -> Result<Layout> {
-    pilot_with(prony.glassy(), |grid, capacity| {
+    pilot_with(&Geometry::UNIT_SPHERE, prony.glassy(), |grid, capacity| {
         run_exponential(prony, grid, capacity, false)
     })
 }
@@ -24,24 +24,33 @@ pub fn pilot(prony: &Prony) -> Result<Layout> {
 pub fn pilot_material(material: &CanonicalMaterial) -> Result<Layout> {
     let g = &material.geometry;
     match &material.network {
-        Network::General(net) => pilot_with(net.entry_stiffness(0.0).0, |grid, capacity| {
+        Network::General(net) => pilot_with(g, net.entry_stiffness(0.0).0, |grid, capacity| {
             run_network_on(g, net, grid, capacity, false)
         }),
-        Network::Stacked(net) => pilot_with(net.entry_stiffness(0.0).0, |grid, capacity| {
+        Network::Stacked(net) => pilot_with(g, net.entry_stiffness(0.0).0, |grid, capacity| {
             run_network_on(g, net, grid, capacity, false)
         }),
-        Network::StandardSolid(_) => pilot_with(material.prony.glassy(), |grid, capacity| {
+        Network::StandardSolid(_) => pilot_with(g, material.prony.glassy(), |grid, capacity| {
             run_exponential_on(g, &material.prony, grid, capacity, false)
         }),
     }
 }
 
-fn pilot_with(glassy: f64, run: impl Fn(&Grid, usize) -> Result<Outcome>) -> Result<Layout> {
-    // glassy Hertz: k = 16/3 G_eq(0), d = (5/(4k))^(2/5), a = sqrt(d), t_c = 2.943 d
-    let k = 16.0 / 3.0 * glassy;
-    let d = (1.25 / k).powf(0.4);
+fn pilot_with(
+    geometry: &Geometry,
+    glassy: f64,
+    run: impl Fn(&Grid, usize) -> Result<Outcome>,
+) -> Result<Layout> {
+    // the glassy elastic impact: for the paraboloid k = 16/3 G_eq(0), d = (5/(4k))^(2/5),
+    // a = sqrt(d), t_c = 2.943 d; other shapes take their own d and a, and the paraboloid's
+    // times, which the restarts correct
+    let d = if *geometry == Geometry::UNIT_SPHERE {
+        (1.25 / (16.0 / 3.0 * glassy)).powf(0.4)
+    } else {
+        geometry.elastic_max_indentation(glassy)
+    };
     let mut layout = Layout {
-        contact_radius: d.sqrt(),
+        contact_radius: geometry.contact_radius(d),
         compression_time: 1.4716 * d,
         contact_time: 2.9433 * d,
     };

@@ -29,8 +29,11 @@ pub(crate) struct ExpFoundation {
     n: usize,
     /// `sum_i h_ki` over the contact set, per term.
     sum_h: Vec<f64>,
-    /// `sum_i g_i` over the contact set.
+    /// `sum_i w_i g_i` over the contact set (`w_i` the cells' relative widths,
+    /// [`Foundation::rel_weight`]; `sum_h` is weighted the same way).
     sum_g: f64,
+    /// `sum_i w_i` over the contact set (the element count on a uniform grid).
+    wsum: f64,
     /// Counters.
     pub(crate) element_updates: u64,
     pub(crate) max_elements: usize,
@@ -58,6 +61,7 @@ impl ExpFoundation {
             n: 0,
             sum_h: vec![0.0; k],
             sum_g: 0.0,
+            wsum: 0.0,
             element_updates: 0,
             max_elements: 0,
         }
@@ -87,14 +91,14 @@ impl ExpFoundation {
     pub(crate) fn force_now(&self, d: f64) -> f64 {
         let w = self.geom.weight();
         let hs: f64 = self.coef.iter().zip(&self.sum_h).map(|(c, s)| c * s).sum();
-        w * (self.c_inf * (self.n as f64 * d - self.sum_g) + hs)
+        w * (self.c_inf * (self.wsum * d - self.sum_g) + hs)
     }
 
     /// End-of-step force over the *current* contact set as an affine function of the rate `r`
     /// (depth at the start `d`).
     pub(crate) fn affine(&self, d: f64) -> Affine {
         let w = self.geom.weight();
-        let n = self.n as f64;
+        let n = self.wsum;
         let mut a = self.c_inf * (n * d - self.sum_g);
         let mut b = self.c_inf * self.dt * n;
         for k in 0..self.coef.len() {
@@ -120,24 +124,27 @@ impl ExpFoundation {
                 break;
             }
             let u = d1 - g;
+            let om = self.geom.rel_weight(i);
             // time since entry s = u / r; h_k = tau_k (1 - exp(-s/tau_k)) r
-            f += self.c_inf * u;
-            df += self.c_inf * self.dt;
+            f += om * (self.c_inf * u);
+            df += om * (self.c_inf * self.dt);
             for k in 0..self.coef.len() {
                 let x = u / (r * self.tau[k]);
                 let em = (-x).exp();
                 let h = -self.tau[k] * (-x).exp_m1() * r;
-                f += self.coef[k] * h;
+                f += om * (self.coef[k] * h);
                 // dh/dr with u = d1 - g, d1 = d + r dt: x = u/(r tau)
                 // dh/dr = tau(1-e^-x) + r tau e^-x dx/dr, dx/dr = (dt r - u)/(r^2 tau)
-                df += self.coef[k] * (-self.tau[k] * (-x).exp_m1() + em * (self.dt * r - u) / r);
+                df += om
+                    * (self.coef[k] * (-self.tau[k] * (-x).exp_m1() + em * (self.dt * r - u) / r));
             }
             i += 1;
         }
         (w * f, w * df)
     }
 
-    /// End-of-step force of the outermost element in contact (per `8 dx`) for rate `r` from `d`.
+    /// End-of-step force of the outermost element in contact (per `8 dx` and relative width)
+    /// for rate `r` from `d`.
     pub(crate) fn outer_force(&self, d: f64, r: f64) -> Option<f64> {
         if self.n == 0 {
             return None;
@@ -166,10 +173,9 @@ impl ExpFoundation {
     /// of the two outermost elements' forces at depth `d` (current states), kept within the
     /// outermost element's cell.
     pub(crate) fn edge_radius(&self, d: f64) -> f64 {
-        let dx = self.geom.dx();
         match self.n {
             0 => 0.0,
-            1 => dx,
+            1 => self.geom.radius_of(1),
             n => {
                 let k_n = self.coef.len();
                 let force = |i: usize| {
@@ -180,9 +186,9 @@ impl ExpFoundation {
                     f
                 };
                 let (fo, fi) = (force(n - 1), force(n - 2));
-                let x_o = (n as f64 - 0.5) * dx;
+                let (x_o, x_i) = (self.geom.x(n - 1), self.geom.x(n - 2));
                 let s = if fi > fo { fo / (fi - fo) } else { 0.5 };
-                x_o + dx * s.clamp(0.0, 0.5)
+                x_o + (x_o - x_i) * s.clamp(0.0, 0.5)
             }
         }
     }
@@ -197,7 +203,7 @@ impl ExpFoundation {
             a += self.coef[k] * self.decay[k] * self.h[i * k_n + k];
             b += self.coef[k] * self.beta[k];
         }
-        let w = self.geom.weight();
+        let w = self.geom.weight() * self.geom.rel_weight(i);
         Affine { a: w * a, b: w * b }
     }
 
@@ -206,9 +212,12 @@ impl ExpFoundation {
         let k_n = self.coef.len();
         self.n -= 1;
         self.h.truncate(self.n * k_n);
-        self.sum_g -= self.geom.g(self.n);
+        let om = self.geom.rel_weight(self.n);
+        self.sum_g -= om * self.geom.g(self.n);
+        self.wsum -= om;
         if self.n == 0 {
             self.sum_g = 0.0;
+            self.wsum = 0.0;
         }
     }
 
@@ -220,10 +229,11 @@ impl ExpFoundation {
             *s = 0.0;
         }
         for i in 0..self.n {
+            let om = self.geom.rel_weight(i);
             for k in 0..k_n {
                 let h = &mut self.h[i * k_n + k];
                 *h = self.decay[k] * *h + self.beta[k] * r;
-                self.sum_h[k] += *h;
+                self.sum_h[k] += om * *h;
             }
         }
         self.element_updates += self.n as u64;
@@ -235,12 +245,14 @@ impl ExpFoundation {
                     break;
                 }
                 let u = d1 - g;
+                let om = self.geom.rel_weight(self.n);
                 for k in 0..k_n {
                     let h = -self.tau[k] * (-(u / (r * self.tau[k]))).exp_m1() * r;
                     self.h.push(h);
-                    self.sum_h[k] += h;
+                    self.sum_h[k] += om * h;
                 }
-                self.sum_g += g;
+                self.sum_g += om * g;
+                self.wsum += om;
                 self.n += 1;
             }
             self.max_elements = self.max_elements.max(self.n);

@@ -36,32 +36,91 @@ use euler::EulerFoundation;
 use exponential::ExpFoundation;
 use network::NetFoundation;
 
-/// Element positions of the foundation.
+/// Element positions of the foundation: uniform cells of width `dx`, or for a power law with
+/// `n < 2` (a cone: `n = 1`) cells graded towards the tip, `x = s^p` over a uniform `s` of
+/// spacing `dx` with `p = 2 / n`, so that the first element's `g` is `O(dx^2)` as for the
+/// paraboloid (a uniform grid would leave an `O(dx)` tail of the force unresolved at the start
+/// and the end of contact). The map is `x = S (s / S)^p` with `S` the contact radius the grid
+/// was laid out for (`capacity` covers four of them, [`capacity_for`]), so that a graded grid
+/// has as many elements across that radius as a uniform one. Each element's force weight is
+/// `8` times its cell width.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Foundation {
     dx: f64,
-    inv_radius: f64,
+    geometry: Geometry,
+    /// `1 / R` of a paraboloid (its `g` costs two products), `None` for other shapes.
+    inv_radius: Option<f64>,
+    /// The grading exponent `p` (`1`: uniform).
+    grade: f64,
+    /// The length `S` of the graded map.
+    span: f64,
     capacity: usize,
 }
 
 impl Foundation {
-    /// Foundation with spacing `dx` for the indenter `geometry` (a paraboloid: its `1 / R` is
-    /// kept, so that `g` costs two products), with at most `capacity` elements.
+    /// Foundation with spacing `dx` for the indenter `geometry`, with at most `capacity`
+    /// elements. A flat punch's spacing is adjusted to fit a whole number of elements in its
+    /// radius (its force is then exact in the spacing).
     pub fn new(dx: f64, geometry: &Geometry, capacity: usize) -> Self {
+        let (dx, grade) = match *geometry {
+            Geometry::Flat { radius } => (radius / (radius / dx).round().max(1.0), 1.0),
+            // x = s^p with s of the order of the contact radius: the same element count
+            Geometry::PowerLaw { exponent } if exponent < 2.0 => {
+                let p = 2.0 / exponent;
+                (dx, p)
+            }
+            _ => (dx, 1.0),
+        };
         Self {
             dx,
+            geometry: *geometry,
             inv_radius: geometry.inverse_radius(),
+            grade,
+            span: (capacity.saturating_sub(16).max(4) as f64) * dx / 4.0,
             capacity,
         }
     }
-    /// Equivalent profile at element `i`: `g(x_i) = x_i^2 / R` ([`Geometry::profile`]),
-    /// `x_i = (i + 1/2) dx`.
+    /// Position of element `i` (the image of its cell's midpoint in `s`).
+    #[inline]
+    pub fn x(&self, i: usize) -> f64 {
+        let s = (i as f64 + 0.5) * self.dx;
+        if self.grade == 1.0 {
+            s
+        } else {
+            self.span * (s / self.span).powf(self.grade)
+        }
+    }
+    /// Outer edge of cell `i - 1`: the contact radius of `i` elements.
+    #[inline]
+    fn edge(&self, i: usize) -> f64 {
+        let s = i as f64 * self.dx;
+        if self.grade == 1.0 {
+            s
+        } else {
+            self.span * (s / self.span).powf(self.grade)
+        }
+    }
+    /// Width of cell `i` relative to `dx` (exactly 1 on a uniform grid).
+    #[inline]
+    pub fn rel_weight(&self, i: usize) -> f64 {
+        if self.grade == 1.0 {
+            1.0
+        } else {
+            (self.edge(i + 1) - self.edge(i)) / self.dx
+        }
+    }
+    /// Equivalent profile at element `i`: `g(x_i)` ([`Geometry::profile`]; `x_i^2 / R` for the
+    /// paraboloid).
     #[inline]
     pub fn g(&self, i: usize) -> f64 {
-        let x = (i as f64 + 0.5) * self.dx;
-        x * x * self.inv_radius
+        let x = self.x(i);
+        match self.inv_radius {
+            Some(k) => x * x * k,
+            None => self.geometry.profile(x),
+        }
     }
-    /// Force weight of one element pair, `2 * 4 dx`.
+    /// Force weight of one element pair of relative width 1, `2 * 4 dx`
+    /// (times [`Foundation::rel_weight`] for element `i`).
     #[inline]
     pub fn weight(&self) -> f64 {
         8.0 * self.dx
@@ -74,9 +133,13 @@ impl Foundation {
     pub fn capacity(&self) -> usize {
         self.capacity
     }
-    /// Contact radius represented by `n` elements in contact: the outer cell edge `n dx`.
+    /// The indenter's shape.
+    pub fn shape(&self) -> &Geometry {
+        &self.geometry
+    }
+    /// Contact radius represented by `n` elements in contact: the outer cell edge.
     pub fn radius_of(&self, n: usize) -> f64 {
-        n as f64 * self.dx
+        self.edge(n)
     }
 }
 
@@ -516,6 +579,7 @@ fn run_stepper<F: Stepper>(
     let (max_elements, element_updates) = f.counters();
     Ok(finish(
         Method::Mdr,
+        f.geometry().shape(),
         v,
         t_end,
         &tr,
@@ -579,6 +643,16 @@ pub fn run_euler(
     capacity: usize,
     history: bool,
 ) -> Result<Outcome> {
+    if material.geometry != Geometry::UNIT_SPHERE {
+        return Err(Error::NotSupported {
+            solver: "mdr-euler",
+            what: format!(
+                "the indenter shape {:?}: the paper's explicit Euler runs the paraboloid only; \
+                 use mdr, reference or auto",
+                material.geometry
+            ),
+        });
+    }
     let geom = Foundation::new(grid.dx, &material.geometry, capacity);
     match &material.network {
         Network::StandardSolid(n) => {
@@ -659,6 +733,7 @@ fn euler_loop<N: euler::Dashpots>(
     }
     Ok(finish(
         Method::MdrEuler,
+        f.geometry().shape(),
         v,
         t_end,
         &tr,
@@ -669,6 +744,7 @@ fn euler_loop<N: euler::Dashpots>(
 
 fn finish(
     solver: Method,
+    geometry: &Geometry,
     v_end: f64,
     t_end: f64,
     tr: &Tracker,
@@ -683,7 +759,7 @@ fn finish(
         max_indentation: tr.d_max,
         time_of_max_indentation: tr.t_max_d.unwrap_or(f64::NAN),
         max_force: tr.max_force,
-        max_contact_radius: tr.d_max.sqrt(),
+        max_contact_radius: geometry.contact_radius(tr.d_max),
         dissipated_energy: 0.5 * (1.0 - cor * cor),
         cor_error_estimate: None,
         history,

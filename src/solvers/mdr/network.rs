@@ -26,8 +26,11 @@ pub(crate) struct NetFoundation<N: ElementModel> {
     n: usize,
     /// Sum of the states over the contact set.
     sum: Vec<f64>,
-    /// `sum_i g_i` over the contact set.
+    /// `sum_i w_i g_i` over the contact set (`w_i` the cells' relative widths,
+    /// [`Foundation::rel_weight`]; `sum` is weighted the same way).
     sum_g: f64,
+    /// `sum_i w_i` (the element count on a uniform grid).
+    wsum: f64,
     element_updates: u64,
     max_elements: usize,
 }
@@ -44,6 +47,7 @@ impl<N: ElementModel> NetFoundation<N> {
             n: 0,
             sum: vec![0.0; len],
             sum_g: 0.0,
+            wsum: 0.0,
             element_updates: 0,
             max_elements: 0,
         }
@@ -68,7 +72,7 @@ impl<N: ElementModel> Stepper for NetFoundation<N> {
 
     fn affine(&self, d: f64) -> Affine {
         let w = self.geom.weight();
-        let n = self.n as f64;
+        let n = self.wsum;
         let (a, b) = self
             .net
             .end_force(&self.factors, n * d - self.sum_g, &self.sum);
@@ -95,8 +99,9 @@ impl<N: ElementModel> Stepper for NetFoundation<N> {
             let u = d1 - g;
             let s = u / r;
             let (q, dq) = self.net.entry_stiffness(s);
-            f += q * u;
-            df += q * dt + u * dq * (dt - s) / r;
+            let om = self.geom.rel_weight(i);
+            f += om * (q * u);
+            df += om * (q * dt + u * dq * (dt - s) / r);
             i += 1;
         }
         let w = self.geom.weight();
@@ -119,7 +124,7 @@ impl<N: ElementModel> Stepper for NetFoundation<N> {
     fn outer_affine(&self, d: f64) -> Affine {
         let g = self.geom.g(self.n - 1);
         let (a, b) = self.net.end_force(&self.factors, d - g, self.outer());
-        let w = self.geom.weight();
+        let w = self.geom.weight() * self.geom.rel_weight(self.n - 1);
         Affine {
             a: w * a,
             b: w * b * N::step(&self.factors),
@@ -129,9 +134,12 @@ impl<N: ElementModel> Stepper for NetFoundation<N> {
     fn pop(&mut self) {
         self.n -= 1;
         self.state.truncate(self.n * self.len);
-        self.sum_g -= self.geom.g(self.n);
+        let om = self.geom.rel_weight(self.n);
+        self.sum_g -= om * self.geom.g(self.n);
+        self.wsum -= om;
         if self.n == 0 {
             self.sum_g = 0.0;
+            self.wsum = 0.0;
         }
     }
 
@@ -144,8 +152,9 @@ impl<N: ElementModel> Stepper for NetFoundation<N> {
         for i in 0..self.n {
             let st = &mut self.state[i * len..(i + 1) * len];
             self.net.advance(&self.factors, d - self.geom.g(i), du, st);
+            let om = self.geom.rel_weight(i);
             for (s, x) in self.sum.iter_mut().zip(st.iter()) {
-                *s += x;
+                *s += om * x;
             }
         }
         self.element_updates += self.n as u64;
@@ -160,11 +169,13 @@ impl<N: ElementModel> Stepper for NetFoundation<N> {
                 let f = self.net.factors(u / r);
                 let mut st = vec![0.0; len];
                 self.net.advance(&f, 0.0, u, &mut st);
+                let om = self.geom.rel_weight(self.n);
                 for (s, x) in self.sum.iter_mut().zip(&st) {
-                    *s += x;
+                    *s += om * x;
                 }
                 self.state.extend_from_slice(&st);
-                self.sum_g += g;
+                self.sum_g += om * g;
+                self.wsum += om;
                 self.n += 1;
             }
             self.max_elements = self.max_elements.max(self.n);

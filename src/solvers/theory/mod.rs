@@ -40,7 +40,7 @@ pub use viscoelastic::{response, separation_time, IndentSample};
 use crate::error::Result;
 use crate::model::contact::{CanonicalOutcome, Contact};
 use crate::model::tolerances;
-use crate::solvers::api::{require_unit_paraboloid, ImpactSolver, SolveOptions, SolverKind};
+use crate::solvers::api::{ImpactSolver, SolveOptions, SolverKind};
 
 /// The reference solver behind the solver interface, on the contact's independently derived
 /// `G_eq` ([`Contact::independent_g_eq`]): the CoR and the characteristic values, or with
@@ -54,12 +54,17 @@ impl ImpactSolver for Reference {
         SolverKind::Reference
     }
     fn solve(&self, contact: &Contact, opts: &SolveOptions) -> Result<CanonicalOutcome> {
-        require_unit_paraboloid(contact, self.kind())?;
         let prony = contact.independent_g_eq()?;
+        let g = contact.geometry;
         let o = if opts.history {
-            reference::impact_sampled(prony, opts.rtol.max(1e-13), tolerances::HISTORY_SAMPLES)?
+            reference::impact_sampled_on(
+                g,
+                prony,
+                opts.rtol.max(1e-13),
+                tolerances::HISTORY_SAMPLES,
+            )?
         } else {
-            impact(prony, opts.rtol, false)?
+            reference::impact_on(g, prony, opts.rtol, false)?
         };
         Ok(CanonicalOutcome::new(o))
     }

@@ -58,6 +58,7 @@ use super::{REF_EVENT_TOL, REF_LOCAL_FACTOR, REF_MAX_NEWTON, REF_MAX_STEPS, REF_
 use crate::error::{check, Error, Result};
 use crate::math::roots::newton_bracketed_with;
 use crate::math::special::exp_moments;
+use crate::model::contact::Geometry;
 use crate::model::impact::{History, Method, Outcome, Work};
 use crate::model::material::Prony;
 use nalgebra::{SMatrix, SVector};
@@ -175,6 +176,8 @@ struct Dense {
 
 struct Solver<'a> {
     prony: &'a Prony,
+    /// The indenter's shape: `w(d)` (`phi` of the module docs) and `a(d)`.
+    geom: Geometry,
     coll: Coll,
     records: Vec<Record>,
     t_m: f64,
@@ -185,6 +188,9 @@ struct Solver<'a> {
 enum Phase {
     Compression,
     Restitution,
+    /// After the turn of a flat punch: the contact radius stays, so the compression equations
+    /// hold until the force returns to zero (no Ting root).
+    FlatRelease,
 }
 
 /// Raw result of one run at a fixed local tolerance.
@@ -232,12 +238,12 @@ fn emit(
         let t = times[*next];
         let de = sv.eval_record(rec, t);
         match phase {
-            Phase::Compression => {
-                let mut f = sv.prony.relaxed * de.d.max(0.0).powf(1.5);
+            Phase::Compression | Phase::FlatRelease => {
+                let mut f = sv.prony.relaxed * sv.geom.force_function(de.d);
                 for (k, p) in sv.prony.terms.iter().enumerate() {
                     f += p.coefficient * de.q[k];
                 }
-                hh.push(t, de.d, de.dv, 16.0 / 3.0 * f, de.d.max(0.0).sqrt());
+                hh.push(t, de.d, de.dv, 16.0 / 3.0 * f, sv.geom.contact_radius(de.d));
             }
             Phase::Restitution => {
                 let (t1, d1, f) = sv.ting(t, de.d, &de.s, guess)?;
@@ -245,7 +251,7 @@ fn emit(
                 // At the end of contact t1 -> 0 and sqrt(d(t1)) magnifies the root's round-off
                 // (t1 ~ 1e-15 gives a ~ 3e-8): below END_T1 t_m the sample is the end of contact.
                 let a = if t1 > END_T1 * sv.t_m {
-                    d1.max(0.0).sqrt()
+                    sv.geom.contact_radius(d1)
                 } else {
                     0.0
                 };
@@ -260,14 +266,15 @@ fn emit(
 /// `t1 / t_m` below which a restitution sample is taken as the end of contact (`a = 0`).
 const END_T1: f64 = 1e-9;
 
-fn run(prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
+fn run(geom: Geometry, prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
     let want_history = *sampling == Sampling::StepEnds;
     let out_times: &[f64] = match sampling {
         Sampling::Times(t) => t,
         _ => &[],
     };
     let mut next_out = 0usize;
-    let mut sv = Solver::new(prony)?;
+    let mut sv = Solver::new(prony, geom)?;
+    let mut d_max = 0.0f64;
     let kk = prony.terms.len();
     let mut st = State {
         t: 0.0,
@@ -300,10 +307,10 @@ fn run(prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
         }
         if let Some(hh) = hist.as_mut() {
             let a = match phase {
-                Phase::Compression => s.d.max(0.0).sqrt(),
+                Phase::Compression | Phase::FlatRelease => sv.geom.contact_radius(s.d),
                 Phase::Restitution => {
                     if s.t1 > 0.0 {
-                        sv.dense(s.t1).d.max(0.0).sqrt()
+                        sv.geom.contact_radius(sv.dense(s.t1).d)
                     } else {
                         0.0
                     }
@@ -333,7 +340,9 @@ fn run(prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
         let (first, second, err) = sv.doubled(phase, &st, h, tol)?;
         let event = match phase {
             Phase::Compression => second.end.v < 0.0 || first.end.v < 0.0,
-            Phase::Restitution => sv.psi(&second.end) <= 0.0 || sv.psi(&first.end) <= 0.0,
+            Phase::Restitution | Phase::FlatRelease => {
+                sv.psi(&second.end) <= 0.0 || sv.psi(&first.end) <= 0.0
+            }
         };
         if !event {
             if err > 1.0 {
@@ -361,13 +370,13 @@ fn run(prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
         let g = |sv: &mut Solver, o: &(StepOut, StepOut, f64)| -> f64 {
             match phase {
                 Phase::Compression => o.1.end.v,
-                Phase::Restitution => sv.psi(&o.1.end),
+                Phase::Restitution | Phase::FlatRelease => sv.psi(&o.1.end),
             }
         };
         let (mut lo, mut hi) = (0.0f64, h);
         let g_lo = match phase {
             Phase::Compression => st.v,
-            Phase::Restitution => sv.psi(&st),
+            Phase::Restitution | Phase::FlatRelease => sv.psi(&st),
         };
         let mut g_hi = {
             let full = (first, second, err);
@@ -390,7 +399,9 @@ fn run(prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
             let gx = g(&mut sv, &o);
             let scale = match phase {
                 Phase::Compression => 1.0,
-                Phase::Restitution => sv.prony.glassy() * st.d.abs().max(1e-300),
+                Phase::Restitution | Phase::FlatRelease => {
+                    sv.prony.glassy() * st.d.abs().max(1e-300)
+                }
             };
             if gx.abs() <= REF_EVENT_TOL * scale || (hi - lo) <= 1e-15 * st.t.max(x) {
                 hl = x;
@@ -438,11 +449,16 @@ fn run(prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
                 push(&mut hist, &second.end, phase, &mut sv);
                 st = second.end;
                 sv.t_m = st.t;
+                d_max = st.d;
                 st.t1 = st.t;
-                phase = Phase::Restitution;
+                phase = if sv.geom.is_flat() {
+                    Phase::FlatRelease
+                } else {
+                    Phase::Restitution
+                };
                 h = hl.max(H0);
             }
-            Phase::Restitution => {
+            Phase::Restitution | Phase::FlatRelease => {
                 // free flight after separation: d = d_end + v_end (t - t_end), no force
                 if let Some(hh) = samples.as_mut() {
                     for &t in &out_times[next_out..] {
@@ -457,7 +473,6 @@ fn run(prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
                 second.end.force = 0.0;
                 second.end.t1 = 0.0;
                 push(&mut hist, &second.end, phase, &mut sv);
-                let d_max = sv.records.last().map_or(0.0, |r| r.b.iter().sum::<f64>());
                 let cor = -second.end.v;
                 if f_max_t < sv.t_m {
                     f_max = f_max.max(sv.refine_max_force(f_max_t));
@@ -498,12 +513,20 @@ fn run(prony: &Prony, tol: f64, sampling: &Sampling) -> Result<Run> {
 /// assert!((o.contact_time - tc).abs() < 1e-10 * tc);
 /// ```
 pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
+    impact_on(Geometry::UNIT_SPHERE, prony, rtol, history)
+}
+
+/// As [`impact`], for the indenter `geometry` (canonical units of its shape,
+/// [`crate::model::geometry`]): Lee–Radok and Ting with the shape's `w(d)` and `a(d)` in place
+/// of `d^(3/2)` and `sqrt(d)`; a flat punch keeps its contact radius and separates where the
+/// force returns to zero.
+pub fn impact_on(geometry: Geometry, prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
     let sampling = if history {
         Sampling::StepEnds
     } else {
         Sampling::None
     };
-    solve(prony, rtol, sampling, 0)
+    solve(geometry, prony, rtol, sampling, 0)
 }
 
 /// As [`impact`], with the history sampled at `samples >= 2` equally spaced times over
@@ -513,6 +536,16 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
 /// partial step; restitution: Ting's root at that time), so the sample grid does not depend on the
 /// adaptive steps.
 pub fn impact_sampled(prony: &Prony, rtol: f64, samples: usize) -> Result<Outcome> {
+    impact_sampled_on(Geometry::UNIT_SPHERE, prony, rtol, samples)
+}
+
+/// As [`impact_sampled`], for the indenter `geometry` ([`impact_on`]).
+pub fn impact_sampled_on(
+    geometry: Geometry,
+    prony: &Prony,
+    rtol: f64,
+    samples: usize,
+) -> Result<Outcome> {
     if samples < 2 {
         return Err(Error::OutOfRange {
             field: "samples",
@@ -520,7 +553,7 @@ pub fn impact_sampled(prony: &Prony, rtol: f64, samples: usize) -> Result<Outcom
             allowed: "samples >= 2",
         });
     }
-    solve(prony, rtol, Sampling::None, samples)
+    solve(geometry, prony, rtol, Sampling::None, samples)
 }
 
 /// As [`impact`], with the history sampled at the given ascending `times` (forces from the dense
@@ -534,10 +567,22 @@ pub fn impact_at(prony: &Prony, rtol: f64, times: &[f64]) -> Result<Outcome> {
             allowed: "a non-empty ascending list of times >= 0",
         });
     }
-    solve(prony, rtol, Sampling::Times(times.to_vec()), 0)
+    solve(
+        Geometry::UNIT_SPHERE,
+        prony,
+        rtol,
+        Sampling::Times(times.to_vec()),
+        0,
+    )
 }
 
-fn solve(prony: &Prony, rtol: f64, sampling: Sampling, samples: usize) -> Result<Outcome> {
+fn solve(
+    geom: Geometry,
+    prony: &Prony,
+    rtol: f64,
+    sampling: Sampling,
+    samples: usize,
+) -> Result<Outcome> {
     check(
         "rtol",
         rtol,
@@ -546,7 +591,7 @@ fn solve(prony: &Prony, rtol: f64, sampling: Sampling, samples: usize) -> Result
     )?;
     prony.validate()?;
     let mut tol = (REF_LOCAL_FACTOR * rtol).max(MIN_LOCAL_TOL);
-    let mut coarse = run(prony, tol, &Sampling::None)?;
+    let mut coarse = run(geom, prony, tol, &Sampling::None)?;
     let sampling = if samples >= 2 {
         let tc = coarse.t_end;
         Sampling::Times(
@@ -600,7 +645,7 @@ fn solve(prony: &Prony, rtol: f64, sampling: Sampling, samples: usize) -> Result
             });
         }
         tol = next;
-        let fine = run(prony, tol, &sampling)?;
+        let fine = run(geom, prony, tol, &sampling)?;
         work.steps += fine.steps;
         work.evaluations += fine.evals;
         work.levels = level;
@@ -615,7 +660,7 @@ fn solve(prony: &Prony, rtol: f64, sampling: Sampling, samples: usize) -> Result
                 max_indentation: fine.d_max,
                 time_of_max_indentation: fine.t_m,
                 max_force: fine.f_max,
-                max_contact_radius: fine.d_max.sqrt(),
+                max_contact_radius: geom.contact_radius(fine.d_max),
                 dissipated_energy: 0.5 * (1.0 - e * e),
                 cor_error_estimate: Some(est),
                 history: fine.history,

@@ -4,9 +4,10 @@
 use super::*;
 
 impl<'a> Solver<'a> {
-    pub(super) fn new(prony: &'a Prony) -> Result<Self> {
+    pub(super) fn new(prony: &'a Prony, geom: Geometry) -> Result<Self> {
         Ok(Self {
             prony,
+            geom,
             coll: Coll::new()?,
             records: Vec::new(),
             t_m: 0.0,
@@ -123,7 +124,7 @@ impl<'a> Solver<'a> {
             )?
         };
         let de = self.dense(t1);
-        let mut f = pr.relaxed * de.d.max(0.0).powf(1.5);
+        let mut f = pr.relaxed * self.geom.force_function(de.d);
         for (k, p) in pr.terms.iter().enumerate() {
             f += p.coefficient * (-(t - t1) / p.tau).exp() * de.q[k];
         }
@@ -145,7 +146,7 @@ impl<'a> Solver<'a> {
             y[i] = -0.5 * st.force * x * x;
         }
         let mut dn = [0.0; S];
-        let phi0 = st.d.max(0.0).powf(1.5);
+        let phi0 = self.geom.force_function(st.d);
         // W[k][i][j], j = 0..=S: weights of phi_j in q_k(t_i)
         let mut w = vec![[[0.0; S + 1]; S]; kk];
         // V[k][i][j], j = 0..S: dS_k(t_i)/dD_j
@@ -201,11 +202,11 @@ impl<'a> Solver<'a> {
             let mut jac = Mat::zeros();
             let mut res = Vs::zeros();
             match phase {
-                Phase::Compression => {
+                Phase::Compression | Phase::FlatRelease => {
                     let mut phi = [0.0; S + 1];
                     phi[0] = phi0;
                     for j in 0..S {
-                        phi[j + 1] = dn[j].max(0.0).powf(1.5);
+                        phi[j + 1] = self.geom.force_function(dn[j]);
                     }
                     for i in 0..S {
                         let mut f = pr.relaxed * phi[i + 1];
@@ -223,7 +224,7 @@ impl<'a> Solver<'a> {
                             for k in 0..kk {
                                 g += pr.terms[k].coefficient * w[k][i][j + 1];
                             }
-                            jac[(i, j)] = 8.0 * dn[j].max(0.0).sqrt() * g;
+                            jac[(i, j)] = 8.0 * self.geom.contact_radius(dn[j]) * g;
                         }
                     }
                 }
@@ -236,13 +237,13 @@ impl<'a> Solver<'a> {
                         t1s[i] = t1;
                         force[i] = f;
                         if t1 > 0.0 {
-                            let sq = d1.max(0.0).sqrt();
+                            let sq = 8.0 * self.geom.contact_radius(d1);
                             for j in 0..S {
                                 let mut g = if i == j { pr.relaxed } else { 0.0 };
                                 for k in 0..kk {
                                     g += pr.terms[k].coefficient * vw[k][i][j];
                                 }
-                                jac[(i, j)] = 8.0 * sq * g;
+                                jac[(i, j)] = sq * g;
                             }
                         }
                     }
@@ -294,7 +295,7 @@ impl<'a> Solver<'a> {
         let mut phi = [0.0; S + 1];
         phi[0] = phi0;
         for j in 0..S {
-            phi[j + 1] = dn[j].max(0.0).powf(1.5);
+            phi[j + 1] = self.geom.force_function(dn[j]);
         }
         let av = self.coll.linv * SVector::<f64, { S + 1 }>::from_column_slice(&phi);
         let mut a = [0.0; S + 1];
@@ -357,10 +358,10 @@ impl<'a> Solver<'a> {
         Ok((first, second, err))
     }
 
-    /// Compression force `(16/3)(c_inf d^(3/2) + sum_k c_k q_k)` at `t <= t_m` from the record.
+    /// Compression force `(16/3)(c_inf w(d) + sum_k c_k q_k)` at `t <= t_m` from the record.
     pub(super) fn compression_force(&self, t: f64) -> f64 {
         let de = self.dense(t);
-        let mut f = self.prony.relaxed * de.d.max(0.0).powf(1.5);
+        let mut f = self.prony.relaxed * self.geom.force_function(de.d);
         for (k, p) in self.prony.terms.iter().enumerate() {
             f += p.coefficient * de.q[k];
         }

@@ -1,0 +1,635 @@
+//! Axisymmetric indenters (docs/theory.md §11): the rigid body's shape in SI ([`Shape`]) and, in
+//! canonical units, the MDR's view of it ([`Geometry`]): the equivalent profile `g(x)`, the
+//! contact radius `a(d)` and the force function `w(d)` every solver integrates.
+//!
+//! # The one function a solver needs
+//! For any axisymmetric profile the MDR foundation of elements `4 G dx` pressed to `d - g(x)`
+//! for `|x| < a(d)` (with `g(a) = d`) gives, with a constant modulus `G`, the force
+//! `F = 8 G int_0^a (d - g(x)) dx = (16/3) G w(d)`, and `w'(d) = (3/2) a(d)`. Lee–Radok
+//! (loading) and Ting (unloading) then hold with `w` in place of the paraboloid's `d^(3/2)`
+//! (docs/theory.md §11): the Ting condition does not involve the shape, only its force and
+//! contact radius do. The flat punch has `g = 0` inside its radius: its contact radius never
+//! shrinks, and contact ends when the force returns to zero.
+//!
+//! # Canonical units
+//! Each shape has its own length scale `L` (of `d`) and radius scale `A` (of `a`), chosen so
+//! that `G_inf A L^2 = m v0^2` (force scale `m v0^2 / L = G_inf A L`) and that the canonical
+//! shape is a fixed member of its family ([`Shape::canonical`]):
+//!
+//! | shape | `A`, `L` | canonical `g(x)` |
+//! |---|---|---|
+//! | paraboloid `R` | `L = (m v0^2 / (G sqrt R))^(2/5)`, `A = sqrt(R L)` | `x^2` |
+//! | power law `c r^n` (cone: `n = 1`, `c = 1/tan θ`) | `A^(2n+1) = m v0^2 / (G k_n^2 c^2)`, `L = k_n c A^n` | `x^n` |
+//! | flat punch `a_0` | `A = a_0`, `L = sqrt(m v0^2 / (G a_0))` | `0` for `x < 1` |
+//! | exact sphere(s) `R_i` | as the paraboloid of `1/R = Σ 1/R_i` | `(A/L) x Σ atanh(x A / R_i)` |
+//!
+//! with `k_n = sqrt(pi) Γ(n/2 + 1) / Γ(n/2 + 1/2)` (`g = k_n c x^n`, Popov & Heß's MDR rule).
+
+use crate::error::{Error, Result};
+
+/// The rigid indenter's shape in SI, `f(r)` its height above the tip at distance `r` from the
+/// axis (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Shape {
+    /// Hertz's paraboloid `f(r) = r^2 / (2 R)`, radius of curvature `R` (m).
+    Paraboloid {
+        /// `R` (m).
+        radius: f64,
+    },
+    /// The exact spherical cap `f(r) = R - sqrt(R^2 - r^2)`, or the gap of two colliding bodies
+    /// with a cap each (the profiles add): `caps` are the two bodies' radii (m, `inf` for a
+    /// flat wall) and whether each is exact (`true`) or Hertz's paraboloid.
+    Spheres {
+        /// The two surfaces of the gap.
+        caps: [Cap; 2],
+    },
+    /// The cone `f(r) = r / tan(θ)`, `θ` the angle between the axis and the face (degrees).
+    Cone {
+        /// `θ` (degrees, `0 < θ < 90`).
+        half_angle_deg: f64,
+    },
+    /// The power law `f(r) = c r^n` (SI: `c` in m^(1 - n)).
+    PowerLaw {
+        /// `n` (`0.25 <= n <= 20`).
+        exponent: f64,
+        /// `c` (m^(1 - n)).
+        coefficient: f64,
+    },
+    /// The flat-ended cylinder of radius `a_0` (m): its contact radius is `a_0` from the first
+    /// touch to the separation.
+    Flat {
+        /// `a_0` (m).
+        radius: f64,
+    },
+}
+
+/// One surface of a gap of spheres: its radius (m, or canonical) and whether the exact cap
+/// (`true`) or Hertz's paraboloid of the same radius (`false`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cap {
+    /// Radius (`inf`: a plane, contributing nothing).
+    pub radius: f64,
+    /// The exact spherical cap rather than its paraboloid.
+    pub exact: bool,
+}
+
+/// Largest contact radius, relative to the smallest exact cap's radius, that the canonical
+/// [`Geometry::contact_radius`] returns (`g` grows without bound as `a -> R`).
+const CAP_EDGE: f64 = 1.0 - 1e-15;
+
+impl Shape {
+    /// One exact sphere of radius `radius` (m).
+    pub fn sphere(radius: f64) -> Self {
+        Shape::Spheres {
+            caps: [
+                Cap {
+                    radius,
+                    exact: true,
+                },
+                Cap {
+                    radius: f64::INFINITY,
+                    exact: false,
+                },
+            ],
+        }
+    }
+
+    /// The shape if every parameter is in range, else the first that is not (named as in a
+    /// scene: `radius`, `half_angle_deg`, `exponent`, `coefficient`).
+    pub fn validated(self) -> Result<Self> {
+        let bad = |field, value, allowed| Error::OutOfRange {
+            field,
+            value,
+            allowed,
+        };
+        match self {
+            Shape::Paraboloid { radius } | Shape::Flat { radius } => {
+                if !(radius.is_finite() && radius > 0.0) {
+                    return Err(bad("radius", radius, "0 < radius < inf (m)"));
+                }
+            }
+            Shape::Spheres { caps } => {
+                for c in caps {
+                    if !(c.radius > 0.0) || c.radius.is_nan() {
+                        return Err(bad("radius", c.radius, "0 < radius <= inf (m)"));
+                    }
+                }
+                if caps.iter().all(|c| c.radius.is_infinite()) {
+                    return Err(bad(
+                        "radius",
+                        f64::INFINITY,
+                        "at least one finite radius (two planes do not make a contact)",
+                    ));
+                }
+            }
+            Shape::Cone { half_angle_deg } => {
+                if !(half_angle_deg > 0.0 && half_angle_deg < 90.0) {
+                    return Err(bad(
+                        "half_angle_deg",
+                        half_angle_deg,
+                        "0 < half_angle_deg < 90 (degrees between axis and face)",
+                    ));
+                }
+            }
+            Shape::PowerLaw {
+                exponent,
+                coefficient,
+            } => {
+                if !(0.25..=20.0).contains(&exponent) {
+                    return Err(bad("exponent", exponent, "0.25 <= exponent <= 20"));
+                }
+                if !(coefficient.is_finite() && coefficient > 0.0) {
+                    return Err(bad(
+                        "coefficient",
+                        coefficient,
+                        "0 < coefficient < inf (m^(1 - exponent))",
+                    ));
+                }
+            }
+        }
+        Ok(self)
+    }
+
+    /// The scene name of the shape: `paraboloid`, `sphere`, `cone`, `power-law`, `flat`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Shape::Paraboloid { .. } => "paraboloid",
+            Shape::Spheres { .. } => "sphere",
+            Shape::Cone { .. } => "cone",
+            Shape::PowerLaw { .. } => "power-law",
+            Shape::Flat { .. } => "flat",
+        }
+    }
+
+    /// The radius of curvature at the tip (m) of a shape that has one (paraboloid, spheres:
+    /// `1/R = Σ 1/R_i`); `None` for cones, power laws other than `n = 2` and flat punches.
+    pub fn tip_radius(&self) -> Option<f64> {
+        match *self {
+            Shape::Paraboloid { radius } => Some(radius),
+            Shape::Spheres { caps } => Some(1.0 / caps.iter().map(|c| 1.0 / c.radius).sum::<f64>()),
+            Shape::PowerLaw {
+                exponent: 2.0,
+                coefficient,
+            } => Some(0.5 / coefficient),
+            _ => None,
+        }
+    }
+
+    /// The radius (m) the contact radius cannot reach: the smallest exact cap's; `None` for
+    /// shapes without such a limit.
+    pub fn cap_limit(&self) -> Option<f64> {
+        match self {
+            Shape::Spheres { caps } => caps
+                .iter()
+                .filter(|c| c.exact)
+                .map(|c| c.radius)
+                .min_by(f64::total_cmp)
+                .filter(|r| r.is_finite()),
+            _ => None,
+        }
+    }
+
+    /// True for the flat punch (no Ting phase: the contact radius is constant).
+    pub fn is_flat(&self) -> bool {
+        matches!(self, Shape::Flat { .. })
+    }
+
+    /// A one-line description with the parameters in SI, for reports.
+    pub fn describe(&self) -> String {
+        match *self {
+            Shape::Paraboloid { radius } => format!("paraboloid, R = {radius:.6e} m"),
+            Shape::Spheres { caps } => {
+                let parts: Vec<String> = caps
+                    .iter()
+                    .filter(|c| c.radius.is_finite())
+                    .map(|c| {
+                        format!(
+                            "{} R = {:.6e} m",
+                            if c.exact {
+                                "exact sphere"
+                            } else {
+                                "paraboloid"
+                            },
+                            c.radius
+                        )
+                    })
+                    .collect();
+                parts.join(" + ")
+            }
+            Shape::Cone { half_angle_deg } => format!("cone, half angle {half_angle_deg} deg"),
+            Shape::PowerLaw {
+                exponent,
+                coefficient,
+            } => format!("power law f = {coefficient:.6e} r^{exponent}"),
+            Shape::Flat { radius } => format!("flat punch, radius {radius:.6e} m"),
+        }
+    }
+
+    /// The scales `(L, A)` of the canonical units of an impact of mass `mass` (kg) at `velocity`
+    /// (m/s) on the modulus scale `modulus` (Pa), and the canonical geometry (module docs).
+    /// Computed in logarithms to survive extreme magnitudes.
+    pub fn canonical(&self, mass: f64, velocity: f64, modulus: f64) -> (f64, f64, Geometry) {
+        // ln(m v0^2 / G)
+        let ln_e = mass.ln() + 2.0 * velocity.ln() - modulus.ln();
+        let paraboloid = |r: f64| {
+            let ln_l = 0.4 * (ln_e - 0.5 * r.ln());
+            let ln_a = 0.5 * (r.ln() + ln_l);
+            (ln_l.exp(), ln_a.exp())
+        };
+        match *self {
+            Shape::Paraboloid { radius } => {
+                let (l, a) = paraboloid(radius);
+                (l, a, Geometry::UNIT_SPHERE)
+            }
+            Shape::Spheres { caps } => {
+                let r = self.tip_radius().unwrap_or(f64::INFINITY);
+                let (l, a) = paraboloid(r);
+                let scale = a / l;
+                let caps = caps.map(|c| Cap {
+                    radius: c.radius / a,
+                    exact: c.exact,
+                });
+                (l, a, Geometry::Caps { scale, caps })
+            }
+            Shape::Cone { half_angle_deg } => {
+                let c = 1.0 / half_angle_deg.to_radians().tan();
+                power_law_scales(ln_e, 1.0, c)
+            }
+            Shape::PowerLaw {
+                exponent,
+                coefficient,
+            } => {
+                if exponent == 2.0 {
+                    let (l, a) = paraboloid(0.5 / coefficient);
+                    return (l, a, Geometry::UNIT_SPHERE);
+                }
+                power_law_scales(ln_e, exponent, coefficient)
+            }
+            Shape::Flat { radius } => {
+                let ln_l = 0.5 * (ln_e - radius.ln());
+                (ln_l.exp(), radius, Geometry::Flat { radius: 1.0 })
+            }
+        }
+    }
+}
+
+/// `k_n = sqrt(pi) Γ(n/2 + 1) / Γ(n/2 + 1/2)`: the MDR profile of `f = c r^n` is `k_n c x^n`.
+pub fn power_law_stretch(n: f64) -> f64 {
+    use statrs::function::gamma::ln_gamma;
+    (0.5 * std::f64::consts::PI.ln() + ln_gamma(0.5 * n + 1.0) - ln_gamma(0.5 * n + 0.5)).exp()
+}
+
+fn power_law_scales(ln_e: f64, n: f64, c: f64) -> (f64, f64, Geometry) {
+    let ln_kc = power_law_stretch(n).ln() + c.ln();
+    let ln_a = (ln_e - 2.0 * ln_kc) / (2.0 * n + 1.0);
+    let ln_l = ln_kc + n * ln_a;
+    (ln_l.exp(), ln_a.exp(), Geometry::PowerLaw { exponent: n })
+}
+
+/// The shape of the indenter, as the MDR sees it, in canonical units (module docs): the
+/// equivalent profile `g(x)` of the one-dimensional foundation, the contact radius `a(d)` and
+/// the force function `w(d)` (`F = (16/3) G w(d)` for a constant modulus, `w' = (3/2) a`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Geometry {
+    /// The paraboloid `g(x) = x^2 / R`, `a = sqrt(R d)`, `w = sqrt(R) d^(3/2)`.
+    Paraboloid {
+        /// Radius of curvature `R` (1 in canonical units).
+        radius: f64,
+    },
+    /// The power law `g(x) = x^n`, `a = d^(1/n)`, `w = (3/2) n/(n+1) a d` (the cone: `n = 1`).
+    PowerLaw {
+        /// `n`.
+        exponent: f64,
+    },
+    /// The flat punch: `g = 0` for `x < radius`, `a = radius`, `w = (3/2) radius d`.
+    Flat {
+        /// The punch radius (1 in canonical units).
+        radius: f64,
+    },
+    /// Exact spherical caps (and paraboloids) adding to one gap:
+    /// `g(x) = scale x Σ_i φ_i(x)`, `φ_i = atanh(x / R_i)` for an exact cap, `x / R_i` for a
+    /// paraboloid.
+    Caps {
+        /// The factor `A / L` of the profile.
+        scale: f64,
+        /// The two surfaces (canonical radii, `inf` for a plane).
+        caps: [Cap; 2],
+    },
+}
+
+/// `(1 + u^2) atanh(u) - u` for `0 <= u < 1`, by its series `Σ_{j>=1} 4j/(4j^2-1) u^(2j+1)`
+/// where the closed form cancels (`u < 0.5`).
+fn cap_psi(u: f64) -> f64 {
+    if u >= 0.5 {
+        return (1.0 + u * u) * u.atanh() - u;
+    }
+    let u2 = u * u;
+    let mut p = u * u2;
+    let mut s = 0.0;
+    for j in 1..200 {
+        let jf = j as f64;
+        let t = 4.0 * jf / (4.0 * jf * jf - 1.0) * p;
+        s += t;
+        if t < 1e-17 * s {
+            break;
+        }
+        p *= u2;
+    }
+    s
+}
+
+impl Geometry {
+    /// The canonical sphere, `R = 1`.
+    pub const UNIT_SPHERE: Geometry = Geometry::Paraboloid { radius: 1.0 };
+
+    /// The MDR equivalent profile `g(x)` at distance `x` from the axis (docs/theory.md, paper
+    /// Eq. 6; `inf` outside a flat punch and at or beyond an exact cap's radius).
+    pub fn profile(&self, x: f64) -> f64 {
+        match *self {
+            Geometry::Paraboloid { radius } => x * x / radius,
+            Geometry::PowerLaw { exponent } => x.powf(exponent),
+            Geometry::Flat { radius } => {
+                if x < radius {
+                    0.0
+                } else {
+                    f64::INFINITY
+                }
+            }
+            Geometry::Caps { scale, caps } => {
+                let mut s = 0.0;
+                for c in caps {
+                    if c.radius.is_infinite() {
+                        continue;
+                    }
+                    let u = x / c.radius;
+                    s += if !c.exact {
+                        u
+                    } else if u < 1.0 {
+                        u.atanh()
+                    } else {
+                        return f64::INFINITY;
+                    };
+                }
+                scale * x * s
+            }
+        }
+    }
+
+    /// `g'(x)`.
+    fn profile_slope(&self, x: f64) -> f64 {
+        match *self {
+            Geometry::Paraboloid { radius } => 2.0 * x / radius,
+            Geometry::PowerLaw { exponent } => exponent * x.powf(exponent - 1.0),
+            Geometry::Flat { .. } => 0.0,
+            Geometry::Caps { scale, caps } => {
+                let mut s = 0.0;
+                for c in caps {
+                    if c.radius.is_infinite() {
+                        continue;
+                    }
+                    let u = x / c.radius;
+                    s += if c.exact {
+                        u.atanh() + u / (1.0 - u * u)
+                    } else {
+                        2.0 * u
+                    };
+                }
+                scale * s
+            }
+        }
+    }
+
+    /// Contact radius `a(d)` at indentation `d > 0` (the inverse of `g`; the punch radius for a
+    /// flat punch; `0` for `d <= 0` otherwise).
+    pub fn contact_radius(&self, d: f64) -> f64 {
+        if let Geometry::Flat { radius } = *self {
+            return radius;
+        }
+        if !(d > 0.0) {
+            return 0.0;
+        }
+        match *self {
+            Geometry::Paraboloid { radius } => (radius * d).sqrt(),
+            Geometry::PowerLaw { exponent } => d.powf(1.0 / exponent),
+            Geometry::Flat { radius } => radius,
+            Geometry::Caps { caps, .. } => {
+                // g lies above its paraboloid x^2 (g(x) >= x^2 in these units), so
+                // sqrt(d) bounds a from above; Newton from above on the convex increasing g
+                // converges monotonically.
+                let edge = caps
+                    .iter()
+                    .filter(|c| c.exact)
+                    .map(|c| c.radius)
+                    .fold(f64::INFINITY, f64::min)
+                    * CAP_EDGE;
+                let mut a = d.sqrt().min(edge);
+                for _ in 0..200 {
+                    let f = self.profile(a) - d;
+                    if f <= 0.0 {
+                        break;
+                    }
+                    let step = f / self.profile_slope(a);
+                    a -= step;
+                    if step <= 1e-16 * a {
+                        break;
+                    }
+                }
+                a.max(0.0)
+            }
+        }
+    }
+
+    /// Indentation `d(a)` at which the contact radius is `a` (`g(a)`).
+    pub fn indentation(&self, a: f64) -> f64 {
+        self.profile(a)
+    }
+
+    /// The force function `w(d)` (`F = (16/3) G w(d)` for a constant modulus `G`;
+    /// `w(d) = (3/2) int_0^a (d - g(x)) dx`), `0` for `d <= 0` but for the flat punch, whose
+    /// `w = (3/2) radius d` is linear.
+    pub fn force_function(&self, d: f64) -> f64 {
+        if let Geometry::Flat { radius } = *self {
+            return 1.5 * radius * d;
+        }
+        if !(d > 0.0) {
+            return 0.0;
+        }
+        match *self {
+            Geometry::Paraboloid { radius } => radius.sqrt() * d.powf(1.5),
+            Geometry::PowerLaw { exponent } => {
+                1.5 * exponent / (exponent + 1.0) * d.powf(1.0 / exponent) * d
+            }
+            Geometry::Flat { radius } => 1.5 * radius * d,
+            Geometry::Caps { scale, caps } => {
+                let a = self.contact_radius(d);
+                let mut s = 0.0;
+                for c in caps {
+                    if c.radius.is_infinite() {
+                        continue;
+                    }
+                    let u = a / c.radius;
+                    let psi = if c.exact {
+                        cap_psi(u)
+                    } else {
+                        4.0 / 3.0 * u * u * u
+                    };
+                    s += c.radius * c.radius * psi;
+                }
+                0.75 * scale * s
+            }
+        }
+    }
+
+    /// `w'(d) = (3/2) a(d)`.
+    pub fn force_slope(&self, d: f64) -> f64 {
+        1.5 * self.contact_radius(d)
+    }
+
+    /// `1 / R` of a paraboloid: the factor of `x^2` in `g(x)` (`None` for other shapes).
+    pub fn inverse_radius(&self) -> Option<f64> {
+        match *self {
+            Geometry::Paraboloid { radius } => Some(1.0 / radius),
+            _ => None,
+        }
+    }
+
+    /// True for the flat punch.
+    pub fn is_flat(&self) -> bool {
+        matches!(self, Geometry::Flat { .. })
+    }
+
+    /// The elastic impact in this geometry with the constant modulus `g` (canonical: unit mass
+    /// and impact velocity): the maximum indentation, from `(16/3) g int_0^d w = 1/2`.
+    pub fn elastic_max_indentation(&self, g: f64) -> f64 {
+        let energy = |d: f64| 16.0 / 3.0 * g * integral_of(|x| self.force_function(x), d);
+        // bracket then bisect in log space (the energy grows monotonically)
+        let (mut lo, mut hi) = (0.0f64, 1.0f64);
+        while energy(hi) < 0.5 {
+            lo = hi;
+            hi *= 2.0;
+            if hi > 1e300 {
+                break;
+            }
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if energy(mid) < 0.5 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+            if hi - lo <= 1e-15 * hi {
+                break;
+            }
+        }
+        0.5 * (lo + hi)
+    }
+}
+
+/// `int_0^d f` by 64-point Gauss–Legendre after the substitution `x = d s^2` (smooth for the
+/// `sqrt`-type start of every force function).
+fn integral_of(f: impl Fn(f64) -> f64, d: f64) -> f64 {
+    crate::math::quad::integrate(
+        "force function",
+        |s| 2.0 * d * s * f(d * s * s),
+        0.0,
+        1.0,
+        &[],
+        1e-13,
+    )
+    .map_or(f64::NAN, |q| q.value)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn num_w(g: &Geometry, d: f64) -> f64 {
+        let a = g.contact_radius(d);
+        let n = 20_000;
+        let h = a / n as f64;
+        // midpoint rule of 1.5 int_0^a (d - g)
+        (0..n)
+            .map(|i| d - g.profile((i as f64 + 0.5) * h))
+            .sum::<f64>()
+            * h
+            * 1.5
+    }
+
+    #[test]
+    fn force_function_is_the_integral_of_the_profile() {
+        let shapes = [
+            Geometry::UNIT_SPHERE,
+            Geometry::PowerLaw { exponent: 1.0 },
+            Geometry::PowerLaw { exponent: 3.5 },
+            Shape::sphere(1e-3).canonical(1e-3, 1.0, 1e6).2,
+            Shape::Spheres {
+                caps: [
+                    Cap {
+                        radius: 2e-3,
+                        exact: true,
+                    },
+                    Cap {
+                        radius: 3e-3,
+                        exact: false,
+                    },
+                ],
+            }
+            .canonical(1e-3, 3.0, 1e6)
+            .2,
+        ];
+        for g in shapes {
+            for d in [1e-3, 0.1, 0.7, 1.3] {
+                let (w, n) = (g.force_function(d), num_w(&g, d));
+                assert!((w - n).abs() < 1e-6 * n, "{g:?} d {d}: {w} vs {n}");
+                assert!((g.profile(g.contact_radius(d)) - d).abs() < 1e-13 * d);
+                // w' = 1.5 a by a central difference
+                let h = 1e-6 * d;
+                let fd = (g.force_function(d + h) - g.force_function(d - h)) / (2.0 * h);
+                assert!((fd - g.force_slope(d)).abs() < 1e-6 * fd, "{g:?} d {d}");
+            }
+        }
+    }
+
+    #[test]
+    fn cap_series_meets_the_closed_form() {
+        for u in [0.49, 0.4999999, 0.5] {
+            let closed = (1.0 + u * u) * f64::atanh(u) - u;
+            assert!((cap_psi(u) - closed).abs() < 1e-14 * closed);
+        }
+        // the leading term 4/3 u^3 for small u
+        assert!((cap_psi(1e-5) / (4.0 / 3.0 * 1e-15) - 1.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn canonical_scales_balance_the_energy() {
+        // G A L^2 = m v^2 for every shape, and the paraboloid of the power law n = 2
+        let (m, v, g) = (2e-3, 1.7, 3e6);
+        for s in [
+            Shape::Paraboloid { radius: 4e-3 },
+            Shape::sphere(4e-3),
+            Shape::Cone {
+                half_angle_deg: 70.3,
+            },
+            Shape::PowerLaw {
+                exponent: 3.0,
+                coefficient: 50.0,
+            },
+            Shape::Flat { radius: 1e-3 },
+        ] {
+            let (l, a, _) = s.canonical(m, v, g);
+            assert!((g * a * l * l / (m * v * v) - 1.0).abs() < 1e-13, "{s:?}");
+        }
+        let p = Shape::PowerLaw {
+            exponent: 2.0,
+            coefficient: 0.5 / 4e-3,
+        }
+        .canonical(m, v, g);
+        let q = Shape::Paraboloid { radius: 4e-3 }.canonical(m, v, g);
+        assert!((p.0 / q.0 - 1.0).abs() < 1e-14 && p.2 == q.2);
+        assert!((power_law_stretch(2.0) - 2.0).abs() < 1e-14);
+        assert!((power_law_stretch(1.0) - std::f64::consts::FRAC_PI_2).abs() < 1e-14);
+    }
+}
