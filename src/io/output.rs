@@ -5,6 +5,7 @@ use std::path::Path;
 
 use crate::error::{Error, Result};
 use crate::model::bodies::BodyMaterial;
+use crate::model::geometry::Shape;
 use crate::model::impact::{History, Impact, Outcome, Target};
 use crate::model::material::{Bulk, BulkRheology, Material, StandardSolid};
 use crate::model::validity::Validity;
@@ -127,10 +128,16 @@ pub fn summary(impact: &Impact, o: &Outcome) -> String {
     let s = impact.sphere();
     let mut out = String::new();
     let mut line = |k: &str, v: String| out.push_str(&format!("{k:<28}{v}\n"));
-    line(
-        "sphere",
-        format!("m = {:.6e} kg, R = {:.6e} m", s.mass(), s.radius()),
-    );
+    match impact.shape() {
+        Shape::Paraboloid { .. } => line(
+            "sphere",
+            format!("m = {:.6e} kg, R = {:.6e} m", s.mass(), s.radius()),
+        ),
+        shape => line(
+            "indenter",
+            format!("m = {:.6e} kg, {}", s.mass(), shape.describe()),
+        ),
+    }
     line("impact velocity", format!("{:.6e} m/s", impact.velocity()));
     match impact.target() {
         Target::HalfSpace(m) => line("material", material(m)),
@@ -221,10 +228,17 @@ pub fn summary(impact: &Impact, o: &Outcome) -> String {
         ),
     );
     let v = Validity::of(impact, o);
-    let mut measures = format!(
-        "a_max/R = {:.3}, d_max/R = {:.3}",
-        v.contact_radius_ratio, v.indentation_ratio
-    );
+    let mut measures = if impact.sphere().radius().is_finite() {
+        format!(
+            "a_max/R = {:.3}, d_max/R = {:.3}",
+            v.contact_radius_ratio, v.indentation_ratio
+        )
+    } else {
+        format!(
+            "no radius of curvature to compare with ({})",
+            impact.shape().name()
+        )
+    };
     if let Some(w) = v.wave_transit_ratio {
         measures.push_str(&format!(", wave transit / contact time = {w:.2e}"));
     }
@@ -267,6 +281,7 @@ pub fn impact_json(impact: &Impact, o: &Outcome) -> String {
             }),
         );
         map.insert("warnings".into(), serde_json::json!(validity.warnings));
+        map.insert("shape".into(), serde_json::json!(impact.shape().name()));
     }
     if let (Some(b), Some(map)) = (impact.bodies(), v.as_object_mut()) {
         let (va, vb) = b.rebound_velocities(impact.velocity(), o.cor);

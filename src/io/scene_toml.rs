@@ -11,6 +11,7 @@ use std::fmt::Write;
 
 use crate::io::scene::Scene;
 use crate::model::bodies::{Body, BodyMaterial};
+use crate::model::geometry::Shape;
 use crate::model::impact::Target;
 use crate::model::material::{Bulk, BulkRheology, Material, StandardSolid};
 
@@ -97,10 +98,13 @@ fn general(out: &mut String, table: &str, m: &Material) {
     }
 }
 
-fn body(out: &mut String, b: &Body) {
+fn body(out: &mut String, b: &Body, exact: bool) {
     out.push_str("\n[[body]]\n");
     let _ = writeln!(out, "mass = {}        # kg", num(b.mass()));
     let _ = writeln!(out, "radius = {}      # m", num(b.radius()));
+    if exact {
+        out.push_str("profile = \"sphere\"\n");
+    }
     match b.material() {
         BodyMaterial::Rigid => out.push_str("rigid = true\n"),
         BodyMaterial::Viscoelastic(m) => {
@@ -129,12 +133,47 @@ impl Scene {
         );
         let sphere = |out: &mut String| {
             let s = imp.sphere();
-            let _ = writeln!(
-                out,
-                "\n[sphere]\nmass = {}        # kg\nradius = {}      # m\n",
-                num(s.mass()),
-                num(s.radius())
-            );
+            let indenter = |out: &mut String, keys: &str| {
+                let _ = writeln!(
+                    out,
+                    "\n[indenter]\nmass = {}        # kg\n{keys}",
+                    num(s.mass())
+                );
+            };
+            match *imp.shape() {
+                Shape::Paraboloid { .. } | Shape::Spheres { .. } => {
+                    let profile = if matches!(imp.shape(), Shape::Spheres { .. }) {
+                        "profile = \"sphere\"\n"
+                    } else {
+                        ""
+                    };
+                    let _ = writeln!(
+                        out,
+                        "\n[sphere]\nmass = {}        # kg\nradius = {}      # m\n{profile}",
+                        num(s.mass()),
+                        num(s.radius())
+                    );
+                }
+                Shape::Cone { half_angle_deg } => indenter(
+                    out,
+                    &format!("shape = \"cone\"\nhalf_angle_deg = {}\n", num(half_angle_deg)),
+                ),
+                Shape::PowerLaw {
+                    exponent,
+                    coefficient,
+                } => indenter(
+                    out,
+                    &format!(
+                        "shape = \"power-law\"\nexponent = {}\ncoefficient = {}   # m^(1 - exponent)\n",
+                        num(exponent),
+                        num(coefficient)
+                    ),
+                ),
+                Shape::Flat { radius } => indenter(
+                    out,
+                    &format!("shape = \"flat\"\nradius = {}      # m\n", num(radius)),
+                ),
+            }
         };
         match imp.target() {
             Target::HalfSpace(m) => {
@@ -142,8 +181,12 @@ impl Scene {
                 material(&mut out, "material", m);
             }
             Target::TwoBodies(b) => {
-                body(&mut out, b.a());
-                body(&mut out, b.b());
+                let exact = match imp.shape() {
+                    Shape::Spheres { caps } => [caps[0].exact, caps[1].exact],
+                    _ => [false, false],
+                };
+                body(&mut out, b.a(), exact[0]);
+                body(&mut out, b.b(), exact[1]);
             }
         }
         let o = &self.options;

@@ -180,9 +180,11 @@ impl SolveOptions {
 pub(crate) fn require_unit_paraboloid(contact: &Contact, solver: SolverKind) -> Result<()> {
     match contact.geometry {
         Geometry::Paraboloid { radius: 1.0 } => Ok(()),
-        g => Err(Error::NotSupported {
+        _ => Err(Error::NotSupported {
             solver: solver.name(),
-            what: format!("the geometry {g:?}: it solves the canonical paraboloid (R = 1) only"),
+            what: "indenters other than the paraboloid (Hertz): it is written for d^(3/2); \
+                   reference and mdr solve every shape"
+                .into(),
         }),
     }
 }
