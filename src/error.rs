@@ -158,6 +158,18 @@ pub enum Error {
         /// The key or flag that holds the path (e.g. `"[output] history"`).
         field: &'static str,
     },
+    /// An output path that cannot be written as asked: the key or flag that gave it, the path
+    /// and why (an existing path that is not a regular file, a file used as a folder, two
+    /// outputs at one path).
+    #[error("{key} = {path}: {reason}")]
+    OutputPath {
+        /// The scene key or flag (e.g. `"[output] plot"`, `"--out"`).
+        key: String,
+        /// The path as given.
+        path: String,
+        /// What is wrong, in words.
+        reason: String,
+    },
     /// A request that the chosen solver does not support.
     #[error("{0}")]
     Unsupported(String),
@@ -298,6 +310,7 @@ impl Error {
             | Error::Scene(_)
             | Error::Csv { .. }
             | Error::EmptyPath { .. }
+            | Error::OutputPath { .. }
             | Error::Parse { .. }
             | Error::InvalidBodies { .. } => ErrorKind::Input,
             Error::UnstableStep { .. }

@@ -126,6 +126,10 @@ pub struct RunArgs {
     /// Print the outcome as one JSON object (SI units) and nothing else on stdout.
     #[arg(long)]
     pub json: bool,
+    /// Write DIR/history.csv, DIR/force.svg and DIR/force_indentation.svg (instead of the
+    /// scene's [output] files). Without it and without [output], no file is written.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
 }
 
 // `curve` (its help text is the doc comment of Command::Curve)

@@ -5,7 +5,8 @@ use std::path::Path;
 
 use mdr_impact::apps::{batch, curve, dem, dma, fit, indent, sweep};
 use mdr_impact::error::escape_text;
-use mdr_impact::io::{output, plot, scene::Scene};
+use mdr_impact::io::run_files::RunFiles;
+use mdr_impact::io::{output, scene::Scene};
 use mdr_impact::report::{bench, figures, sections, stress, validate};
 use mdr_impact::{solve, Error, Groups, Impact, Material, SolveOptions};
 
@@ -17,6 +18,7 @@ pub fn run(command: Option<Command>) -> Outcome {
     let default = RunArgs {
         scene: None,
         json: false,
+        out: None,
     };
     match command.unwrap_or(Command::Run(default)) {
         Command::Run(a) => cmd_run(a),
@@ -48,24 +50,22 @@ fn scene_or_default(path: Option<&Path>) -> Result<Scene, Error> {
     path.map_or_else(|| Ok(Scene::default_scene()), Scene::load)
 }
 
-fn cmd_run(RunArgs { scene, json }: RunArgs) -> Outcome {
-    let scene = scene_or_default(scene.as_deref())?;
-    let outcome = solve(&scene.impact, &scene.options)?;
-    // with --json, stdout holds the JSON object alone; notes go to stderr
-    let note = |k: &str, v: &Path| match json {
-        true => eprintln!("{k:<28}{}", v.display()),
-        false => println!("{k:<28}{}", v.display()),
+fn cmd_run(RunArgs { scene, json, out }: RunArgs) -> Outcome {
+    let name = scene_name(scene.as_deref());
+    let mut scene = scene_or_default(scene.as_deref())?;
+    let files = match &out {
+        Some(dir) => RunFiles::in_folder(dir),
+        None => RunFiles::of_scene(&scene),
     };
-    if let Some(h) = &outcome.history {
-        if let Some(p) = &scene.history_csv {
-            output::write_history_csv(p, h)?;
-        }
-        if let Some(p) = &scene.plot {
-            plot::force_history_svg(p, h, "Contact force")?;
-        }
-    }
+    scene.options.history = files.any();
+    let outcome = solve(&scene.impact, &scene.options)?;
+    // rendered first and written together: a failure leaves none of them
+    output::write_outputs(&files.render(&name, &scene.impact, &outcome)?)?;
     if json {
-        println!("{}", output::impact_json(&scene.impact, &outcome));
+        println!(
+            "{}",
+            output::impact_json(&scene.impact, &scene.options, &outcome)
+        );
     } else {
         for (table, log10_a) in &scene.shifts {
             let log10_a = log10_a + 0.0; // no "-0.0000" at the reference temperature
@@ -79,17 +79,31 @@ fn cmd_run(RunArgs { scene, json }: RunArgs) -> Outcome {
                 10f64.powf(log10_a)
             );
         }
-        print!("{}", output::summary(&scene.impact, &outcome));
+        print!(
+            "{}",
+            output::summary(&scene.impact, &scene.options, &outcome)
+        );
     }
-    if outcome.history.is_some() {
-        if let Some(p) = &scene.history_csv {
-            note("history written to", p);
+    // with --json, stdout holds the JSON object alone; notes go to stderr
+    for (what, path) in files.described() {
+        match json {
+            true => eprintln!("{what:<28}{}", path.display()),
+            false => println!("{what:<28}{}", path.display()),
         }
-        if let Some(p) = &scene.plot {
-            note("force plot written to", p);
-        }
+    }
+    if !json && !files.any() {
+        println!(
+            "{:<28}none (ask with --out DIR or the scene's [output])",
+            "files written"
+        );
     }
     Ok(())
+}
+
+/// How plots name a scene: its file stem, or "default scene".
+fn scene_name(path: Option<&Path>) -> String {
+    path.and_then(|p| p.file_stem())
+        .map_or("default scene".into(), |s| s.to_string_lossy().into_owned())
 }
 
 fn cmd_curve(

@@ -41,8 +41,9 @@
 //!                                      # instantaneous + ratios
 //! ```
 //!
-//! Unknown keys are errors. Output paths are relative to the working directory; a Prony table
-//! `file` is relative to the scene file ([`Scene::load`]).
+//! Unknown keys are errors. Every path in a scene (the `[output]` files, a Prony table `file`)
+//! is relative to the folder of the scene file ([`Scene::load`]; to the working directory for
+//! text without a file, [`Scene::parse`]); an absolute path stays as it is.
 
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -164,9 +165,11 @@ pub struct Scene {
     pub impact: Impact,
     /// How to solve it.
     pub options: SolveOptions,
-    /// Where to write the history CSV, if requested.
+    /// Where to write the history CSV, if requested (relative to the scene file's folder
+    /// already joined in).
     pub history_csv: Option<PathBuf>,
-    /// Where to write the force-time plot (SVG), if requested.
+    /// Where to write the force-time plot (SVG), if requested (likewise); the force-indentation
+    /// plot `force_indentation.svg` goes beside it.
     pub plot: Option<PathBuf>,
     /// `[impact] temperature` (°C), when given.
     pub temperature: Option<f64>,
@@ -176,14 +179,15 @@ pub struct Scene {
 }
 
 impl Scene {
-    /// Parse and validate a scene from TOML text; a Prony table `file` is read relative to the
-    /// working directory (see [`Scene::parse_in`]).
+    /// Parse and validate a scene from TOML text; its paths (a Prony table `file`, the `[output]`
+    /// files) are relative to the working directory (see [`Scene::parse_in`]).
     pub fn parse(text: &str) -> Result<Self> {
         Self::parse_in(text, Path::new(""))
     }
 
-    /// Parse and validate a scene from TOML text, reading Prony table files (`file = ...` in
-    /// `[material.shear]` or `[material.bulk]`) relative to the folder `base`.
+    /// Parse and validate a scene from TOML text, with every path in it relative to the folder
+    /// `base`: Prony table files (`file = ...` in `[material.shear]` or `[material.bulk]`) and
+    /// the `[output]` files.
     pub fn parse_in(text: &str, base: &Path) -> Result<Self> {
         Self::parse_at(text, base, None)
     }
@@ -264,13 +268,17 @@ impl Scene {
                 ))
             }
         };
-        let history_csv = raw.output.history;
-        let plot = raw.output.plot;
-        for (field, path) in [("[output] history", &history_csv), ("[output] plot", &plot)] {
+        for (field, path) in [
+            ("[output] history", &raw.output.history),
+            ("[output] plot", &raw.output.plot),
+        ] {
             if path.as_ref().is_some_and(|p| p.as_os_str().is_empty()) {
                 return Err(Error::EmptyPath { field });
             }
         }
+        // one rule for every path in a scene: relative to the scene file's folder
+        let history_csv = raw.output.history.map(|p| base.join(p));
+        let plot = raw.output.plot.map(|p| base.join(p));
         options.history = history_csv.is_some() || plot.is_some();
         options.validate()?;
         Ok(Scene {
