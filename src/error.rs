@@ -170,6 +170,17 @@ pub enum Error {
         /// What is wrong, in words.
         reason: String,
     },
+    /// A Prony series of the input with more terms than the documented limit
+    /// ([`crate::io::prony_table::MAX_PRONY_TERMS`]).
+    #[error("{field}: {terms} Prony terms exceed the limit of {max} terms per series")]
+    TooManyPronyTerms {
+        /// Where the series was given (e.g. `"[material.shear] terms"`, a table file).
+        field: String,
+        /// Terms given.
+        terms: usize,
+        /// The limit.
+        max: usize,
+    },
     /// A request that the chosen solver does not support.
     #[error("{0}")]
     Unsupported(String),
@@ -311,6 +322,7 @@ impl Error {
             | Error::Csv { .. }
             | Error::EmptyPath { .. }
             | Error::OutputPath { .. }
+            | Error::TooManyPronyTerms { .. }
             | Error::Parse { .. }
             | Error::InvalidBodies { .. } => ErrorKind::Input,
             Error::UnstableStep { .. }
