@@ -49,7 +49,10 @@ pub enum Error {
         bound: f64,
     },
     /// A solver would need more work than its hard cap allows.
-    #[error("{solver}: {what} = {needed} exceeds the work limit {limit}; loosen rtol or use another solver")]
+    #[error(
+        "{solver}: {what}: {needed} needed, above the work limit of {limit}; loosen rtol or use \
+         another solver"
+    )]
     WorkLimit {
         /// Solver name.
         solver: &'static str,

@@ -84,7 +84,10 @@ fn cor_input_csv_in_order_and_bad_rows_named() {
     assert!(o.status.success(), "{}", stderr(&o));
     let out = String::from_utf8(o.stdout).unwrap();
     let lines: Vec<&str> = out.lines().collect();
-    assert_eq!(lines[0], "nu,p2,p3,cor,contact_time,max_indentation");
+    assert_eq!(
+        lines[0],
+        "nu,p2,p3,cor,contact_time_canonical,max_indentation_canonical"
+    );
     assert_eq!(lines.len(), 4);
     assert!(lines[1].starts_with("0.5,0.001,10,"));
     assert!(lines[2].starts_with("0.45,0.01,1,"));

@@ -143,7 +143,7 @@ def test_curve_shapes_and_errors():
     for idx in np.ndindex(v.shape):
         assert c.cor[idx] == scene.with_velocity(v[idx]).run(history=False).cor
     assert c.limits["p3_unit_velocity"] > 0 and c.limits["relaxed_crossover"] is None
-    with pytest.raises(mi.Error, match=r"^index \(1,\): --v0: at v0 = -1e0 m/s: velocity = -1e0"):
+    with pytest.raises(mi.Error, match=r"^index \(1,\): at v0 = -1e0 m/s: velocity = -1e0"):
         mi.curve(scene, [1.0, -1.0])
 
 

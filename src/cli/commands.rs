@@ -161,7 +161,7 @@ fn cmd_dem(a: DemArgs) -> Outcome {
     let format = a.format.with_lammps_version(a.lammps_version.as_deref())?;
     let modulus = a.modulus.into();
     // the input is checked before the scene is read or anything solved
-    let range = curve::VelocityRange::parse_optional_n(&a.v0, a.log, dem::DEFAULT_VELOCITIES)?;
+    let range = curve::VelocityRange::parse(&a.v0, a.log)?;
     let scene = scene_or_default(a.scene.as_deref())?;
     let report = with_progress(range.n as u64, "dem", |tick| {
         dem::run(&scene.impact, &scene.options, &range, modulus, tick)
@@ -211,8 +211,13 @@ fn cmd_cor(a: CorArgs) -> Outcome {
     // clap guarantees all three are present without --input
     let g = |x: Option<f64>| x.unwrap_or(f64::NAN);
     let (nu, p2, p3) = (g(a.groups.nu), g(a.groups.p2), g(a.groups.p3));
-    let impact = Impact::from_groups(Groups::new(nu, p2, p3)?)?;
+    let groups = Groups::new(nu, p2, p3)?;
+    let impact = Impact::from_groups(groups)?;
     let o = solve(&impact, &opts)?;
+    if a.json {
+        println!("{}", output::groups_json(&groups, &impact, &opts, &o));
+        return Ok(());
+    }
     if let Some(why) = o.fallback_reason() {
         eprintln!("note: answered by {} ({})", o.solver, escape_text(&why));
     }
@@ -289,26 +294,44 @@ fn cmd_bench(a: BenchArgs) -> Outcome {
 }
 
 fn cmd_stress(a: StressArgs) -> Outcome {
-    let (rows, seed, out, report) = (a.rows, a.seed, a.out.as_path(), a.report.as_path());
-    // a missing report or markers fail before minutes of work
-    sections::require_section(report, &sections::STRESS)?;
+    let (rows, seed, out) = (a.rows, a.seed, a.out.as_path());
+    // outside the repository there is no VALIDATION.md: the section is printed, not filed
+    let default = Path::new(DEFAULT_REPORT);
+    let report = a
+        .report
+        .as_deref()
+        .or_else(|| default.exists().then_some(default));
+    if let Some(report) = report {
+        // a missing report or markers fail before minutes of work
+        sections::require_section(report, &sections::STRESS)?;
+    }
     let r = with_progress(rows as u64, "stress", |tick| stress::run(rows, seed, tick));
     let section = r.markdown();
     print!("{section}");
-    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
     let csv = out.join("stress_outside.csv");
     r.write_problems_csv(&csv)?;
-    sections::update_section(report, &sections::STRESS, &section)?;
     let (n, path) = (r.problems.len(), csv.display());
-    println!(
-        "stress section of {} updated; {n} solves that broke the contract in {path}",
-        report.display()
-    );
+    match report {
+        Some(report) => {
+            sections::update_section(report, &sections::STRESS, &section)?;
+            println!(
+                "stress section of {} updated; {n} solves that broke the contract in {path}",
+                report.display()
+            );
+        }
+        None => println!(
+            "no report updated (no {DEFAULT_REPORT} here; --report FILE names one); {n} solves \
+             that broke the contract in {path}"
+        ),
+    }
     match r.clean() {
         true => Ok(()),
         false => Err(Failure::ContractBroken { problems: n, csv }),
     }
 }
+
+/// The report `stress` updates by default, when the working directory has it.
+const DEFAULT_REPORT: &str = "VALIDATION.md";
 
 fn cmd_reference(a: ReferenceArgs) -> Outcome {
     let written = mdr_impact::solvers::theory::generate_reference(&a.out)?;
@@ -343,7 +366,7 @@ fn cmd_sweep(a: SweepArgs) -> Outcome {
         sweep::run(&points, out, opts, tick)
     })?;
     println!("{summary}");
-    println!("rows in {}", out.display());
+    println!("{:<28}{}", "rows written to", out.display());
     Ok(())
 }
 

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use crate::error::{Error, Result};
 use crate::model::bodies::BodyMaterial;
-use crate::model::impact::{History, Impact, Method, Outcome, Target};
+use crate::model::impact::{Groups, History, Impact, Method, Outcome, Target};
 use crate::model::material::{Bulk, BulkRheology, Material, StandardSolid};
 use crate::model::validity::Validity;
 use crate::solvers::{SolveOptions, SolverKind};
@@ -306,8 +306,12 @@ pub fn summary(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> String {
     let s = impact.sphere();
     let mut out = String::new();
     let mut line = |k: &str, v: String| out.push_str(&format!("{k:<28}{v}\n"));
+    let sphere = match impact.bodies() {
+        Some(_) => "effective sphere",
+        None => "sphere",
+    };
     line(
-        "sphere",
+        sphere,
         format!("m = {:.6e} kg, R = {:.6e} m", s.mass(), s.radius()),
     );
     line("impact velocity", format!("{:.6e} m/s", impact.velocity()));
@@ -329,8 +333,8 @@ pub fn summary(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> String {
                 );
             }
             line(
-                "  (sphere above:",
-                "effective mass and radius; velocity: relative)".to_string(),
+                "  (effective sphere:",
+                "reduced mass and radius of the two bodies; velocity: relative)".to_string(),
             );
         }
     }
@@ -433,6 +437,11 @@ pub fn json(o: &Outcome) -> String {
 /// nothing to say: the solver asked for answered) and `fallback` why `auto` did not answer with
 /// `fast` (null when it did, or when another solver was asked for).
 pub fn impact_json(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> String {
+    impact_value(impact, opts, o).to_string()
+}
+
+/// The object of [`impact_json`].
+fn impact_value(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> serde_json::Value {
     let mut v = value(o);
     let validity = Validity::of(impact, o);
     if let Some(map) = v.as_object_mut() {
@@ -464,6 +473,24 @@ pub fn impact_json(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> String 
                 "b": {"rebound_velocity": vb},
             }),
         );
+    }
+    v
+}
+
+/// The outcome of an impact given by its dimensionless groups (`mdr-impact cor --json`) as one
+/// JSON object: `groups` (`nu`, `p2`, `p3`), `units` (`"canonical: m = R = v0 = G_inf = 1"`,
+/// the units of every dimensional number in it) and the keys of [`impact_json`].
+/// `groups` are the groups as given (the impact's own are recomputed from its canonical
+/// moduli and may differ in the last bit).
+pub fn groups_json(groups: &Groups, impact: &Impact, opts: &SolveOptions, o: &Outcome) -> String {
+    let mut v = impact_value(impact, opts, o);
+    if let Some(map) = v.as_object_mut() {
+        let g = groups;
+        map.insert(
+            "groups".into(),
+            serde_json::json!({"nu": g.nu, "p2": g.p2, "p3": g.p3}),
+        );
+        map.insert("units".into(), "canonical: m = R = v0 = G_inf = 1".into());
     }
     v.to_string()
 }
