@@ -7,6 +7,7 @@ use crate::error::{Error, Result};
 use crate::model::bodies::BodyMaterial;
 use crate::model::impact::{Groups, History, Impact, Method, Outcome, Target};
 use crate::model::material::{Bulk, BulkRheology, Material, StandardSolid};
+use crate::model::plausibility;
 use crate::model::validity::Validity;
 use crate::solvers::{SolveOptions, SolverKind};
 
@@ -406,7 +407,7 @@ pub fn summary(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> String {
         measures.push_str(&format!(", wave transit / contact time = {w:.2e}"));
     }
     line("validity", measures);
-    for w in &v.warnings {
+    for w in plausibility::warnings(impact).iter().chain(&v.warnings) {
         line("warning", w.clone());
     }
     out
@@ -437,11 +438,18 @@ pub fn json(o: &Outcome) -> String {
 /// nothing to say: the solver asked for answered) and `fallback` why `auto` did not answer with
 /// `fast` (null when it did, or when another solver was asked for).
 pub fn impact_json(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> String {
-    impact_value(impact, opts, o).to_string()
+    impact_value(impact, opts, o, true).to_string()
 }
 
-/// The object of [`impact_json`].
-fn impact_value(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> serde_json::Value {
+/// The object of [`impact_json`]; `warnings` with the plausibility warnings of the inputs
+/// ([`plausibility::warnings`]) first when `check_inputs` (not for canonical units, where a
+/// sphere of `m = R = 1` has no plausible density).
+fn impact_value(
+    impact: &Impact,
+    opts: &SolveOptions,
+    o: &Outcome,
+    check_inputs: bool,
+) -> serde_json::Value {
     let mut v = value(o);
     let validity = Validity::of(impact, o);
     if let Some(map) = v.as_object_mut() {
@@ -462,7 +470,12 @@ fn impact_value(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> serde_json
                 "wave_transit_ratio": validity.wave_transit_ratio,
             }),
         );
-        map.insert("warnings".into(), serde_json::json!(validity.warnings));
+        let mut warnings = match check_inputs {
+            true => plausibility::warnings(impact),
+            false => Vec::new(),
+        };
+        warnings.extend(validity.warnings);
+        map.insert("warnings".into(), serde_json::json!(warnings));
     }
     if let (Some(b), Some(map)) = (impact.bodies(), v.as_object_mut()) {
         let (va, vb) = b.rebound_velocities(impact.velocity(), o.cor);
@@ -479,11 +492,12 @@ fn impact_value(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> serde_json
 
 /// The outcome of an impact given by its dimensionless groups (`mdr-impact cor --json`) as one
 /// JSON object: `groups` (`nu`, `p2`, `p3`), `units` (`"canonical: m = R = v0 = G_inf = 1"`,
-/// the units of every dimensional number in it) and the keys of [`impact_json`].
+/// the units of every dimensional number in it) and the keys of [`impact_json`] (its
+/// `warnings` without the plausibility of the inputs, meaningless in canonical units).
 /// `groups` are the groups as given (the impact's own are recomputed from its canonical
 /// moduli and may differ in the last bit).
 pub fn groups_json(groups: &Groups, impact: &Impact, opts: &SolveOptions, o: &Outcome) -> String {
-    let mut v = impact_value(impact, opts, o);
+    let mut v = impact_value(impact, opts, o, false);
     if let Some(map) = v.as_object_mut() {
         let g = groups;
         map.insert(

@@ -8,5 +8,6 @@ pub mod contact;
 pub mod hertz;
 pub mod impact;
 pub mod material;
+pub mod plausibility;
 pub mod tolerances;
 pub mod validity;
