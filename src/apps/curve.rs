@@ -366,11 +366,12 @@ pub struct Written {
 
 /// Write `dir/curve.csv` and `dir/curve.svg` (log velocity axis with `log`). Both are rendered
 /// in memory first and written atomically, so an error leaves no partial file.
-pub fn write_outputs(dir: &Path, curve: &Curve, log: bool) -> Result<Written> {
+/// The plot's title names the scene, `name` (its file stem, or `"default scene"`).
+pub fn write_outputs(dir: &Path, curve: &Curve, log: bool, name: &str) -> Result<Written> {
     let csv = dir.join("curve.csv");
     let svg = dir.join("curve.svg");
     let csv_body = csv_text(&curve.rows);
-    let svg_body = cor_curve_svg(&svg, curve, log)?;
+    let svg_body = cor_curve_svg(&svg, curve, log, name)?;
     crate::io::output::write_all_atomic(&[
         (csv.as_path(), csv_body.as_bytes()),
         (svg.as_path(), svg_body.as_bytes()),
@@ -457,7 +458,7 @@ pub fn validity_warning(rows: &[CurveRow]) -> Option<String> {
 /// inside the velocity range, vertical markers at the `p3 = 1` velocity and at the velocities
 /// where the Hertz contact time meets the slowest / fastest relaxation time. Rendered in memory
 /// only; `path` names the file in errors (the caller writes it, atomically).
-pub fn cor_curve_svg(path: &Path, curve: &Curve, log: bool) -> Result<String> {
+pub fn cor_curve_svg(path: &Path, curve: &Curve, log: bool, name: &str) -> Result<String> {
     let (x0, x1) = velocity_span(path, &curve.rows.iter().map(|r| r.v0).collect::<Vec<_>>())?;
     let mut lines: Vec<CorLine> = vec![(
         "elastic limits (relaxed v0 -> 0, glassy v0 -> inf)".to_string(),
@@ -518,7 +519,7 @@ pub fn cor_curve_svg(path: &Path, curve: &Curve, log: bool) -> Result<String> {
     };
     cor_chart_svg(
         path,
-        "Coefficient of restitution against impact velocity",
+        &format!("Coefficient of restitution against impact velocity: {name}"),
         (x0, x1),
         log,
         &lines,

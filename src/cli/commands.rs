@@ -122,11 +122,12 @@ fn cmd_curve(
     let v0 = v0.unwrap_or_default();
     // the input is checked before the scene is read or anything solved
     let range = curve::VelocityRange::parse(&v0, log)?;
+    let name = scene_name(scene.as_deref());
     let scene = scene_or_default(scene.as_deref())?;
     let c = with_progress(range.n as u64, "curve", |tick| {
         curve::run(&scene.impact, &scene.options, &range, tick)
     })?;
-    let written = curve::write_outputs(&out, &c, log)?;
+    let written = curve::write_outputs(&out, &c, log, &name)?;
     print!("{}", curve::summary(&c, Some(&written)));
     Ok(())
 }

@@ -2,6 +2,7 @@
 
 use std::path::Path;
 
+use plotters::coord::combinators::BindKeyPoints;
 use plotters::prelude::*;
 
 use crate::error::{Error, Result};
@@ -375,6 +376,7 @@ pub fn panels_svg(
                         .configure_mesh()
                         .x_desc(x_label)
                         .y_desc(panel.y_label.as_str())
+                        .x_label_formatter(&|x| tick_label(*x))
                         .draw()
                         .map_err(|x| e(&x))?;
                     if !panel.shaded.spans.is_empty() {
@@ -413,7 +415,14 @@ pub fn panels_svg(
                 }};
             }
             if log {
-                draw!(builder.build_cartesian_2d((x0..x1).log_scale(), y0..y1));
+                let (bold, light) = log_ticks(x0, x1);
+                let x = (x0..x1)
+                    .log_scale()
+                    .with_key_points(bold)
+                    .with_light_points(light);
+                // room for the label of the range's upper end
+                builder.margin_right(40);
+                draw!(builder.build_cartesian_2d(x, y0..y1));
             } else {
                 draw!(builder.build_cartesian_2d(x0..x1, y0..y1));
             }
@@ -421,4 +430,44 @@ pub fn panels_svg(
         root.present().map_err(|x| e(&x))?;
     }
     Ok(svg)
+}
+
+/// The ticks of a logarithmic axis from `x0` to `x1` (`0 < x0 < x1`): labelled ones at both
+/// ends of the range and at every decade between them (a decade too close to an end to carry
+/// its own label, within a fifth of a decade, gives way to the end), and minor ones at 2..9
+/// times every decade that reaches into the range, the first and last partial decades
+/// included.
+pub fn log_ticks(x0: f64, x1: f64) -> (Vec<f64>, Vec<f64>) {
+    if !(x0 > 0.0 && x0 < x1 && x1.is_finite()) {
+        return (vec![x0, x1], Vec::new());
+    }
+    let (l0, l1) = (x0.log10(), x1.log10());
+    let mut bold = vec![x0];
+    let mut light = Vec::new();
+    for k in (l0.floor() as i32)..=(l1.ceil() as i32) {
+        let decade = 10f64.powi(k);
+        let lk = f64::from(k);
+        if lk - l0 > 0.2 && l1 - lk > 0.2 {
+            bold.push(decade);
+        }
+        for m in 1..10 {
+            let x = f64::from(m) * decade;
+            if x >= x0 && x <= x1 {
+                light.push(x);
+            }
+        }
+    }
+    bold.push(x1);
+    (bold, light)
+}
+
+/// The label of a tick: the value with at most four significant digits and no trailing zeros
+/// (`0.1`, `1`, `1000`, `0.25`), in exponent form outside 1e-3..1e5 (`1e-5`, `2.5e6`).
+pub fn tick_label(x: f64) -> String {
+    if x != 0.0 && (x.abs() < 1e-3 || x.abs() >= 1e5) {
+        return short(x);
+    }
+    // round to four significant digits, then print the shortest form of that number
+    let rounded: f64 = format!("{x:.3e}").parse().unwrap_or(x);
+    format!("{rounded}")
 }
