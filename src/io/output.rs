@@ -456,11 +456,7 @@ fn impact_value(
         let reason = solver_reason(opts, o);
         map.insert("requested_solver".into(), opts.solver.name().into());
         map.insert("solver_reason".into(), serde_json::json!(reason));
-        let fell_back = opts.solver == SolverKind::Auto && o.solver != Method::Fast;
-        map.insert(
-            "fallback".into(),
-            serde_json::json!(reason.filter(|_| fell_back)),
-        );
+        map.insert("fallback".into(), serde_json::json!(fallback(opts, o)));
         map.insert(
             "validity".into(),
             serde_json::json!({
@@ -561,6 +557,13 @@ pub fn solver_reason(opts: &SolveOptions, o: &Outcome) -> Option<String> {
         }
         other => format!("auto answered with {other}"),
     })
+}
+
+/// JSON's `fallback`: why `auto` did not answer with `fast` ([`solver_reason`]), `None` when
+/// it did or when another solver was asked for.
+pub fn fallback(opts: &SolveOptions, o: &Outcome) -> Option<String> {
+    let fell_back = opts.solver == SolverKind::Auto && o.solver != Method::Fast;
+    solver_reason(opts, o).filter(|_| fell_back)
 }
 
 /// The work counters that mean something for the solver that answered: steps and evaluations
