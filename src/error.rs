@@ -49,7 +49,10 @@ pub enum Error {
         bound: f64,
     },
     /// A solver would need more work than its hard cap allows.
-    #[error("{solver}: {what} = {needed} exceeds the work limit {limit}; loosen rtol or use another solver")]
+    #[error(
+        "{solver}: {what}: {needed} needed, above the work limit of {limit}; loosen rtol or use \
+         another solver"
+    )]
     WorkLimit {
         /// Solver name.
         solver: &'static str,
@@ -157,6 +160,29 @@ pub enum Error {
     EmptyPath {
         /// The key or flag that holds the path (e.g. `"[output] history"`).
         field: &'static str,
+    },
+    /// An output path that cannot be written as asked: the key or flag that gave it, the path
+    /// and why (an existing path that is not a regular file, a file used as a folder, two
+    /// outputs at one path).
+    #[error("{key} = {path}: {reason}")]
+    OutputPath {
+        /// The scene key or flag (e.g. `"[output] plot"`, `"--out"`).
+        key: String,
+        /// The path as given.
+        path: String,
+        /// What is wrong, in words.
+        reason: String,
+    },
+    /// A Prony series of the input with more terms than the documented limit
+    /// ([`crate::io::prony_table::MAX_PRONY_TERMS`]).
+    #[error("{field}: {terms} Prony terms exceed the limit of {max} terms per series")]
+    TooManyPronyTerms {
+        /// Where the series was given (e.g. `"[material.shear] terms"`, a table file).
+        field: String,
+        /// Terms given.
+        terms: usize,
+        /// The limit.
+        max: usize,
     },
     /// A request that the chosen solver does not support.
     #[error("{0}")]
@@ -298,6 +324,8 @@ impl Error {
             | Error::Scene(_)
             | Error::Csv { .. }
             | Error::EmptyPath { .. }
+            | Error::OutputPath { .. }
+            | Error::TooManyPronyTerms { .. }
             | Error::Parse { .. }
             | Error::InvalidBodies { .. } => ErrorKind::Input,
             Error::UnstableStep { .. }

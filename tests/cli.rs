@@ -25,7 +25,7 @@ fn assert_one_line_error(o: &Output, needle: &str) {
 }
 
 #[test]
-fn default_scene_runs_and_writes_outputs() {
+fn default_scene_runs_and_writes_nothing_unless_asked() {
     let dir = tempfile::tempdir().unwrap();
     let o = run(&[], dir.path());
     assert!(o.status.success(), "{}", stderr(&o));
@@ -33,11 +33,26 @@ fn default_scene_runs_and_writes_outputs() {
     assert!(out.contains("coefficient of restitution"));
     assert!(out.contains("contact time") && out.contains(" s\n"));
     assert!(out.contains("max force") && out.contains(" N\n"));
-    let csv = std::fs::read_to_string(dir.path().join("out/default-history.csv")).unwrap();
+    assert!(out.contains("files written               none"), "{out}");
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+    // --out DIR: the history, the force-time and the force-indentation plots
+    let o = run(&["run", "--out", "res"], dir.path());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        out.contains("history written to          res/history.csv"),
+        "{out}"
+    );
+    let csv = std::fs::read_to_string(dir.path().join("res/history.csv")).unwrap();
     assert!(csv.starts_with("t,d,v,force,a\n"));
     assert!(csv.lines().count() > 100);
-    let svg = std::fs::read_to_string(dir.path().join("out/default-force.svg")).unwrap();
-    assert!(svg.contains("<svg"));
+    for svg in ["force.svg", "force_indentation.svg"] {
+        let text = std::fs::read_to_string(dir.path().join("res").join(svg)).unwrap();
+        assert!(
+            text.contains("<svg") && text.contains("default scene"),
+            "{svg}"
+        );
+    }
 }
 
 #[test]
@@ -69,7 +84,10 @@ fn cor_input_csv_in_order_and_bad_rows_named() {
     assert!(o.status.success(), "{}", stderr(&o));
     let out = String::from_utf8(o.stdout).unwrap();
     let lines: Vec<&str> = out.lines().collect();
-    assert_eq!(lines[0], "nu,p2,p3,cor,contact_time,max_indentation");
+    assert_eq!(
+        lines[0],
+        "nu,p2,p3,cor,contact_time_canonical,max_indentation_canonical"
+    );
     assert_eq!(lines.len(), 4);
     assert!(lines[1].starts_with("0.5,0.001,10,"));
     assert!(lines[2].starts_with("0.45,0.01,1,"));
@@ -384,7 +402,6 @@ fn stress_smoke_fills_its_section_and_keeps_the_rest() {
 #[test]
 fn run_json_prints_one_object() {
     let dir = tempfile::tempdir().unwrap();
-    // the default scene writes a history and a plot: their notes must not reach stdout
     let o = run(&["run", "--json"], dir.path());
     assert!(o.status.success(), "{}", stderr(&o));
     let out = String::from_utf8(o.stdout.clone()).unwrap();
@@ -403,13 +420,14 @@ fn run_json_prints_one_object() {
     ] {
         assert!(v[key].is_number(), "{key}: {v}");
     }
-    assert!(v["solver"].is_string());
+    // the default scene asks for auto and no history: fast answers, no fallback
+    assert_eq!(v["solver"], "fast");
+    assert_eq!(v["requested_solver"], "auto");
     assert!(v["fallback"].is_null());
+    assert!(v["solver_reason"].is_string());
     for key in ["steps", "evaluations", "levels"] {
         assert!(v["work"][key].is_u64(), "work.{key}: {v}");
     }
-    assert!(stderr(&o).contains("history written to"));
-    assert!(dir.path().join("out/default-history.csv").exists());
     let cor = v["cor"].as_f64().unwrap();
     assert!(cor > 0.0 && cor < 1.0);
 

@@ -47,7 +47,7 @@ fn bad_ranges_are_refused_naming_the_option() {
         ("0.1:inf:5", true),    // non-finite
         ("nan:1:5", false),
         ("0.1:1e999:5", false), // overflows
-        ("0.1:1", false),       // malformed
+        ("0.1", false),         // malformed
         ("0.1:1:5:6", false),
         ("a:1:5", false),
         ("0.1:1:2.5", false),
@@ -199,7 +199,7 @@ fn general_material_is_annotated_by_contact_time_crossovers() {
 fn writes_csv_and_svg() {
     let dir = tempfile::tempdir().unwrap();
     let c = default_curve("0.01:1000:12", true);
-    let w = curve::write_outputs(&dir.path().join("o"), &c, true).unwrap();
+    let w = curve::write_outputs(&dir.path().join("o"), &c, true, "default scene").unwrap();
     let csv = std::fs::read_to_string(&w.csv).unwrap();
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(lines[0], CSV_HEADER);
@@ -227,7 +227,7 @@ fn writes_csv_and_svg() {
     assert!(svg.contains("p3 = 1"));
     // linear axis too
     let lin = default_curve("1:200:12", false);
-    curve::write_outputs(&dir.path().join("lin"), &lin, false).unwrap();
+    curve::write_outputs(&dir.path().join("lin"), &lin, false, "default scene").unwrap();
 }
 
 #[test]
@@ -296,7 +296,7 @@ fn cli_bad_input_is_one_line_and_writes_nothing() {
         "-1:1:5",
         "0.1:inf:5",
         "nan:1:5",
-        "0.1:1",
+        "0.1",
         "x:1:5",
         "0.1:1:-3",
     ] {

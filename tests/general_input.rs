@@ -220,7 +220,7 @@ fn bad_general_input_names_the_key() {
         ),
         (
             format!("{shear_ok}[material.bulk]\nk_inf = 1.0e9\nterms = []\n"),
-            "[material.bulk] terms: k_j",
+            "[material.bulk]: no relaxing term (terms = [] or ratios = []): an elastic bulk is k_0",
         ),
         (
             format!("{shear_ok}[material.bulk]\nk_inf = 1.0e9\nterms = [[1.0e9, -1.0]]\n"),

@@ -293,7 +293,7 @@ def curve(scene, v0):
     ------
     Error
         (a ``ValueError``) naming the index and velocity of the first failing solve
-        (``index (3,): --v0: at v0 = -1e0 m/s: velocity = ...``).
+        (``index (3,): at v0 = -1e0 m/s: velocity = ...``).
 
     Examples
     --------

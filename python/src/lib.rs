@@ -781,7 +781,8 @@ impl Scene {
 
     /// Solve the impact (GIL released), as `mdr-impact run` does; the result carries the
     /// histories with `history=True`, or with `history=None` (default) when the scene has
-    /// `[output]` paths (which is what makes `run` compute them too).
+    /// `[output]` paths (which is what makes `run` compute them too; the embedded default
+    /// scene has none).
     #[pyo3(signature = (history = None))]
     fn run(&self, py: Python<'_>, history: Option<bool>) -> PyResult<ImpactResult> {
         let opts = SolveOptions {
@@ -794,7 +795,15 @@ impl Scene {
             .bodies()
             .map(|b| b.rebound_velocities(impact.velocity(), outcome.cor));
         let validity = mdr_impact::model::validity::Validity::of(impact, &outcome);
-        Ok(ImpactResult::new(outcome, bodies, validity))
+        // as `run --json`: `fallback` says why auto did not answer with fast, and the
+        // plausibility warnings of the inputs come first
+        let fallback = output::fallback(&opts, &outcome);
+        let mut warnings = mdr_impact::model::plausibility::warnings(impact);
+        let mut r = ImpactResult::new(outcome, bodies, validity);
+        r.fallback = fallback;
+        warnings.append(&mut r.warnings);
+        r.warnings = warnings;
+        Ok(r)
     }
 
     /// Impact velocity (m/s; relative normal velocity for two bodies).

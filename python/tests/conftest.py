@@ -37,7 +37,7 @@ def cli(tmp_path_factory):
             pytest.fail(message)
         pytest.skip(message)
 
-    # a scene's [output] paths are relative to the working directory: keep them out of the tree
+    # commands that write into the working directory (curve, dem, stress) keep out of the tree
     cwd = tmp_path_factory.mktemp("cli-cwd")
 
     def run(*args, check=True):

@@ -2,8 +2,8 @@
 //!
 //! Input: CSV with a header and exactly the columns `nu,p2,p3` (`nu = 0.5`: incompressible);
 //! see [`parse_rows`] for line endings, blank lines and quoting.
-//! Output: the input columns, then `cor,contact_time,max_indentation` in canonical units
-//! (`m = R = v0 = G_inf = 1`), rows in input order, computed in parallel.
+//! Output: the input columns, then `cor,contact_time_canonical,max_indentation_canonical` in
+//! canonical units (`m = R = v0 = G_inf = 1`), rows in input order, computed in parallel.
 
 use rayon::prelude::*;
 use std::io::Write;
@@ -38,6 +38,17 @@ pub struct Rows {
     /// 1-based physical line numbers of the empty lines skipped, ascending.
     pub skipped_blank_lines: Vec<u64>,
 }
+
+/// The header of the output: the input columns, the CoR, and the contact time and maximum
+/// indentation in canonical units (`m = R = v0 = G_inf = 1`), which their names say.
+pub const OUTPUT_HEADER: [&str; 6] = [
+    "nu",
+    "p2",
+    "p3",
+    "cor",
+    "contact_time_canonical",
+    "max_indentation_canonical",
+];
 
 /// The header every input file starts with.
 pub const HEADER: [&str; 3] = ["nu", "p2", "p3"];
@@ -129,8 +140,7 @@ pub fn solve_groups(
 pub fn write_results(w: &mut dyn Write, rows: &[Row], outcomes: &[Outcome]) -> Result<()> {
     let mut c = csv::Writer::from_writer(w);
     let io = |e: csv::Error| Error::io("<stdout>", e);
-    c.write_record(["nu", "p2", "p3", "cor", "contact_time", "max_indentation"])
-        .map_err(io)?;
+    c.write_record(OUTPUT_HEADER).map_err(io)?;
     for (r, o) in rows.iter().zip(outcomes) {
         c.write_record([
             r.text[0].as_str(),

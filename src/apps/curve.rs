@@ -53,6 +53,10 @@ pub const MAX_VELOCITIES: usize = 100_000;
 /// The option name used in error messages.
 const FIELD: &str = "--v0";
 
+/// Velocities of a curve when `--v0 MIN:MAX` leaves out `N` (`curve`, `dem` and the Python
+/// package alike).
+pub const DEFAULT_VELOCITIES: usize = 50;
+
 /// Impact velocities `MIN:MAX:N` (m/s): `N` values from `MIN` to `MAX`, both included, evenly
 /// spaced in `v0` or, with `log`, in `ln v0`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -68,38 +72,31 @@ pub struct VelocityRange {
 }
 
 impl VelocityRange {
-    /// Parse `MIN:MAX:N`. Requires finite `0 < MIN < MAX` and `2 <= N <= 100000`: a curve needs
-    /// two distinct ends, so `N = 1` is refused (solve one velocity with `run`). Every error
-    /// names `--v0`.
+    /// Parse `MIN:MAX[:N]`, `N` = [`DEFAULT_VELOCITIES`] when left out (the grammar of every
+    /// `--v0`). Requires finite `0 < MIN < MAX` and `2 <= N <= 100000`: a curve needs two
+    /// distinct ends, so `N = 1` is refused (solve one velocity with `run`). Every error names
+    /// `--v0` and the part of it that is wrong.
     pub fn parse(s: &str, log: bool) -> Result<Self> {
-        Self::parse_with(s, log, None)
+        Self::parse_optional_n(s, log, DEFAULT_VELOCITIES)
     }
 
     /// Parse `MIN:MAX[:N]`: as [`VelocityRange::parse`], with `N = default_n` when it is left
-    /// out (`mdr-impact dem`).
+    /// out.
     pub fn parse_optional_n(s: &str, log: bool, default_n: usize) -> Result<Self> {
-        Self::parse_with(s, log, Some(default_n))
-    }
-
-    fn parse_with(s: &str, log: bool, default_n: Option<usize>) -> Result<Self> {
-        let form = if default_n.is_some() {
-            "MIN:MAX[:N]"
-        } else {
-            "MIN:MAX:N"
-        };
         let bad = |what: &str| Error::Parse {
             what: FIELD,
             input: crate::error::escape_text(s),
             expected: format!(
-                "{form} (m/s, 0 < MIN < MAX, 2 <= N <= {MAX_VELOCITIES}); {}",
+                "MIN:MAX[:N] (m/s, 0 < MIN < MAX, 2 <= N <= {MAX_VELOCITIES}, N = {default_n} \
+                 when left out); {}",
                 crate::error::escape_text(what)
             ),
         };
         let parts: Vec<&str> = s.split(':').map(str::trim).collect();
-        let default_text = default_n.map(|n| n.to_string());
-        let (a, b, n) = match (parts.as_slice(), &default_text) {
-            ([a, b, n], _) => (*a, *b, *n),
-            ([a, b], Some(d)) => (*a, *b, d.as_str()),
+        let default_text = default_n.to_string();
+        let (a, b, n) = match parts.as_slice() {
+            [a, b, n] => (*a, *b, *n),
+            [a, b] => (*a, *b, default_text.as_str()),
             _ => return Err(bad("wrong number of ':'-separated parts")),
         };
         let num = |t: &str| -> Result<f64> {
@@ -121,18 +118,17 @@ impl VelocityRange {
             .parse()
             .map_err(|_| bad(&format!("N = '{n}' is not a whole number")))?;
         if !(min < max) {
-            return Err(Error::OutOfRange {
-                field: FIELD,
-                value: min,
-                allowed: "MIN < MAX",
-            });
+            return Err(bad(&format!("MIN = {min:e} is not below MAX = {max:e}")));
         }
         if !(2..=MAX_VELOCITIES).contains(&n) {
-            return Err(Error::OutOfRange {
-                field: FIELD,
-                value: n as f64,
-                allowed: "2 <= N <= 100000",
-            });
+            let hint = if n == 1 {
+                " (one velocity: use run)"
+            } else {
+                ""
+            };
+            return Err(bad(&format!(
+                "N = {n} is out of range: allowed 2 <= N <= {MAX_VELOCITIES}{hint}"
+            )));
         }
         let r = Self { min, max, n, log };
         // log spacing of extreme ends must not round to equal or non-finite values
@@ -310,7 +306,7 @@ pub fn run(
 /// (histories off), in parallel; rows in the order of `velocities`, each bit-identical to
 /// [`solve`] at that velocity. `progress` is called once per solved velocity. The error is that
 /// of the first failing velocity in input order, with its index; its message names the velocity
-/// (`--v0: at v0 = ... m/s: ...`). [`run`] is this on a [`VelocityRange`].
+/// (`at v0 = ... m/s: ...`), not the flag: the range was valid, the solve at it failed. [`run`] is this on a [`VelocityRange`].
 pub fn run_velocities(
     impact: &Impact,
     opts: &SolveOptions,
@@ -327,7 +323,7 @@ pub fn run_velocities(
         .map(|&v0| {
             let row = impact_at(impact, v0)
                 .and_then(|i| solve(&i, &opts).map(|o| CurveRow::new(&i, v0, &o)))
-                .map_err(|e| e.at(format!("{FIELD}: at v0 = {v0:e} m/s")));
+                .map_err(|e| e.at(format!("at v0 = {v0:e} m/s")));
             progress();
             row
         })
@@ -370,11 +366,12 @@ pub struct Written {
 
 /// Write `dir/curve.csv` and `dir/curve.svg` (log velocity axis with `log`). Both are rendered
 /// in memory first and written atomically, so an error leaves no partial file.
-pub fn write_outputs(dir: &Path, curve: &Curve, log: bool) -> Result<Written> {
+/// The plot's title names the scene, `name` (its file stem, or `"default scene"`).
+pub fn write_outputs(dir: &Path, curve: &Curve, log: bool, name: &str) -> Result<Written> {
     let csv = dir.join("curve.csv");
     let svg = dir.join("curve.svg");
     let csv_body = csv_text(&curve.rows);
-    let svg_body = cor_curve_svg(&svg, curve, log)?;
+    let svg_body = cor_curve_svg(&svg, curve, log, name)?;
     crate::io::output::write_all_atomic(&[
         (csv.as_path(), csv_body.as_bytes()),
         (svg.as_path(), svg_body.as_bytes()),
@@ -461,7 +458,7 @@ pub fn validity_warning(rows: &[CurveRow]) -> Option<String> {
 /// inside the velocity range, vertical markers at the `p3 = 1` velocity and at the velocities
 /// where the Hertz contact time meets the slowest / fastest relaxation time. Rendered in memory
 /// only; `path` names the file in errors (the caller writes it, atomically).
-pub fn cor_curve_svg(path: &Path, curve: &Curve, log: bool) -> Result<String> {
+pub fn cor_curve_svg(path: &Path, curve: &Curve, log: bool, name: &str) -> Result<String> {
     let (x0, x1) = velocity_span(path, &curve.rows.iter().map(|r| r.v0).collect::<Vec<_>>())?;
     let mut lines: Vec<CorLine> = vec![(
         "elastic limits (relaxed v0 -> 0, glassy v0 -> inf)".to_string(),
@@ -522,7 +519,7 @@ pub fn cor_curve_svg(path: &Path, curve: &Curve, log: bool) -> Result<String> {
     };
     cor_chart_svg(
         path,
-        "Coefficient of restitution against impact velocity",
+        &format!("Coefficient of restitution against impact velocity: {name}"),
         (x0, x1),
         log,
         &lines,

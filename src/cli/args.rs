@@ -126,6 +126,10 @@ pub struct RunArgs {
     /// Print the outcome as one JSON object (SI units) and nothing else on stdout.
     #[arg(long)]
     pub json: bool,
+    /// Write DIR/history.csv, DIR/force.svg and DIR/force_indentation.svg (instead of the
+    /// scene's [output] files). Without it and without [output], no file is written.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
 }
 
 // `curve` (its help text is the doc comment of Command::Curve)
@@ -134,7 +138,7 @@ pub struct CurveArgs {
     /// Scene file (TOML); its sphere, material and solver are used, its velocity and
     /// [output] are not.
     pub scene: Option<PathBuf>,
-    /// Velocities MIN:MAX:N in m/s (0 < MIN < MAX, 2 <= N <= 100000).
+    /// Velocities MIN:MAX[:N] in m/s (0 < MIN < MAX, 2 <= N <= 100000; N defaults to 50).
     #[arg(
         long,
         allow_hyphen_values = true,
@@ -187,9 +191,15 @@ pub struct DemArgs {
 pub struct CorArgs {
     #[command(flatten)]
     pub groups: GroupArgs,
-    /// CSV with header nu,p2,p3: writes nu,p2,p3,cor,contact_time,max_indentation to stdout.
+    /// CSV with header nu,p2,p3: writes
+    /// nu,p2,p3,cor,contact_time_canonical,max_indentation_canonical to stdout (units
+    /// m = R = v0 = G_inf = 1).
     #[arg(long)]
     pub input: Option<PathBuf>,
+    /// Print one JSON object (the groups, the CoR, contact time and indentation in canonical
+    /// units, the solver and why) and nothing else on stdout; not with --input (CSV).
+    #[arg(long, conflicts_with = "input")]
+    pub json: bool,
     /// Solver.
     #[arg(long, default_value = "auto", value_parser = values::solver())]
     pub solver: SolverKind,
@@ -279,9 +289,10 @@ pub struct StressArgs {
     /// Folder for stress_outside.csv.
     #[arg(long, default_value = "validation")]
     pub out: PathBuf,
-    /// Report whose stress section is replaced.
-    #[arg(long, default_value = "VALIDATION.md")]
-    pub report: PathBuf,
+    /// Report whose stress section is replaced; default: VALIDATION.md when there is one in
+    /// the working directory (the repository's), else no report is updated.
+    #[arg(long)]
+    pub report: Option<PathBuf>,
 }
 
 // `reference` (its help text is the doc comment of Command::Reference)

@@ -5,7 +5,8 @@ use std::path::Path;
 
 use mdr_impact::apps::{batch, curve, dem, dma, fit, indent, sweep};
 use mdr_impact::error::escape_text;
-use mdr_impact::io::{output, plot, scene::Scene};
+use mdr_impact::io::run_files::RunFiles;
+use mdr_impact::io::{output, scene::Scene};
 use mdr_impact::report::{bench, figures, sections, stress, validate};
 use mdr_impact::{solve, Error, Groups, Impact, Material, SolveOptions};
 
@@ -17,6 +18,7 @@ pub fn run(command: Option<Command>) -> Outcome {
     let default = RunArgs {
         scene: None,
         json: false,
+        out: None,
     };
     match command.unwrap_or(Command::Run(default)) {
         Command::Run(a) => cmd_run(a),
@@ -48,24 +50,22 @@ fn scene_or_default(path: Option<&Path>) -> Result<Scene, Error> {
     path.map_or_else(|| Ok(Scene::default_scene()), Scene::load)
 }
 
-fn cmd_run(RunArgs { scene, json }: RunArgs) -> Outcome {
-    let scene = scene_or_default(scene.as_deref())?;
-    let outcome = solve(&scene.impact, &scene.options)?;
-    // with --json, stdout holds the JSON object alone; notes go to stderr
-    let note = |k: &str, v: &Path| match json {
-        true => eprintln!("{k:<28}{}", v.display()),
-        false => println!("{k:<28}{}", v.display()),
+fn cmd_run(RunArgs { scene, json, out }: RunArgs) -> Outcome {
+    let name = scene_name(scene.as_deref());
+    let mut scene = scene_or_default(scene.as_deref())?;
+    let files = match &out {
+        Some(dir) => RunFiles::in_folder(dir),
+        None => RunFiles::of_scene(&scene),
     };
-    if let Some(h) = &outcome.history {
-        if let Some(p) = &scene.history_csv {
-            output::write_history_csv(p, h)?;
-        }
-        if let Some(p) = &scene.plot {
-            plot::force_history_svg(p, h, "Contact force")?;
-        }
-    }
+    scene.options.history = files.any();
+    let outcome = solve(&scene.impact, &scene.options)?;
+    // rendered first and written together: a failure leaves none of them
+    output::write_outputs(&files.render(&name, &scene.impact, &outcome)?)?;
     if json {
-        println!("{}", output::impact_json(&scene.impact, &outcome));
+        println!(
+            "{}",
+            output::impact_json(&scene.impact, &scene.options, &outcome)
+        );
     } else {
         for (table, log10_a) in &scene.shifts {
             let log10_a = log10_a + 0.0; // no "-0.0000" at the reference temperature
@@ -79,17 +79,31 @@ fn cmd_run(RunArgs { scene, json }: RunArgs) -> Outcome {
                 10f64.powf(log10_a)
             );
         }
-        print!("{}", output::summary(&scene.impact, &outcome));
+        print!(
+            "{}",
+            output::summary(&scene.impact, &scene.options, &outcome)
+        );
     }
-    if outcome.history.is_some() {
-        if let Some(p) = &scene.history_csv {
-            note("history written to", p);
+    // with --json, stdout holds the JSON object alone; notes go to stderr
+    for (what, path) in files.described() {
+        match json {
+            true => eprintln!("{what:<28}{}", path.display()),
+            false => println!("{what:<28}{}", path.display()),
         }
-        if let Some(p) = &scene.plot {
-            note("force plot written to", p);
-        }
+    }
+    if !json && !files.any() {
+        println!(
+            "{:<28}none (ask with --out DIR or the scene's [output])",
+            "files written"
+        );
     }
     Ok(())
+}
+
+/// How plots name a scene: its file stem, or "default scene".
+fn scene_name(path: Option<&Path>) -> String {
+    path.and_then(|p| p.file_stem())
+        .map_or("default scene".into(), |s| s.to_string_lossy().into_owned())
 }
 
 fn cmd_curve(
@@ -108,11 +122,12 @@ fn cmd_curve(
     let v0 = v0.unwrap_or_default();
     // the input is checked before the scene is read or anything solved
     let range = curve::VelocityRange::parse(&v0, log)?;
+    let name = scene_name(scene.as_deref());
     let scene = scene_or_default(scene.as_deref())?;
     let c = with_progress(range.n as u64, "curve", |tick| {
         curve::run(&scene.impact, &scene.options, &range, tick)
     })?;
-    let written = curve::write_outputs(&out, &c, log)?;
+    let written = curve::write_outputs(&out, &c, log, &name)?;
     print!("{}", curve::summary(&c, Some(&written)));
     Ok(())
 }
@@ -147,7 +162,7 @@ fn cmd_dem(a: DemArgs) -> Outcome {
     let format = a.format.with_lammps_version(a.lammps_version.as_deref())?;
     let modulus = a.modulus.into();
     // the input is checked before the scene is read or anything solved
-    let range = curve::VelocityRange::parse_optional_n(&a.v0, a.log, dem::DEFAULT_VELOCITIES)?;
+    let range = curve::VelocityRange::parse(&a.v0, a.log)?;
     let scene = scene_or_default(a.scene.as_deref())?;
     let report = with_progress(range.n as u64, "dem", |tick| {
         dem::run(&scene.impact, &scene.options, &range, modulus, tick)
@@ -197,8 +212,13 @@ fn cmd_cor(a: CorArgs) -> Outcome {
     // clap guarantees all three are present without --input
     let g = |x: Option<f64>| x.unwrap_or(f64::NAN);
     let (nu, p2, p3) = (g(a.groups.nu), g(a.groups.p2), g(a.groups.p3));
-    let impact = Impact::from_groups(Groups::new(nu, p2, p3)?)?;
+    let groups = Groups::new(nu, p2, p3)?;
+    let impact = Impact::from_groups(groups)?;
     let o = solve(&impact, &opts)?;
+    if a.json {
+        println!("{}", output::groups_json(&groups, &impact, &opts, &o));
+        return Ok(());
+    }
     if let Some(why) = o.fallback_reason() {
         eprintln!("note: answered by {} ({})", o.solver, escape_text(&why));
     }
@@ -275,26 +295,44 @@ fn cmd_bench(a: BenchArgs) -> Outcome {
 }
 
 fn cmd_stress(a: StressArgs) -> Outcome {
-    let (rows, seed, out, report) = (a.rows, a.seed, a.out.as_path(), a.report.as_path());
-    // a missing report or markers fail before minutes of work
-    sections::require_section(report, &sections::STRESS)?;
+    let (rows, seed, out) = (a.rows, a.seed, a.out.as_path());
+    // outside the repository there is no VALIDATION.md: the section is printed, not filed
+    let default = Path::new(DEFAULT_REPORT);
+    let report = a
+        .report
+        .as_deref()
+        .or_else(|| default.exists().then_some(default));
+    if let Some(report) = report {
+        // a missing report or markers fail before minutes of work
+        sections::require_section(report, &sections::STRESS)?;
+    }
     let r = with_progress(rows as u64, "stress", |tick| stress::run(rows, seed, tick));
     let section = r.markdown();
     print!("{section}");
-    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
     let csv = out.join("stress_outside.csv");
     r.write_problems_csv(&csv)?;
-    sections::update_section(report, &sections::STRESS, &section)?;
     let (n, path) = (r.problems.len(), csv.display());
-    println!(
-        "stress section of {} updated; {n} solves that broke the contract in {path}",
-        report.display()
-    );
+    match report {
+        Some(report) => {
+            sections::update_section(report, &sections::STRESS, &section)?;
+            println!(
+                "stress section of {} updated; {n} solves that broke the contract in {path}",
+                report.display()
+            );
+        }
+        None => println!(
+            "no report updated (no {DEFAULT_REPORT} here; --report FILE names one); {n} solves \
+             that broke the contract in {path}"
+        ),
+    }
     match r.clean() {
         true => Ok(()),
         false => Err(Failure::ContractBroken { problems: n, csv }),
     }
 }
+
+/// The report `stress` updates by default, when the working directory has it.
+const DEFAULT_REPORT: &str = "VALIDATION.md";
 
 fn cmd_reference(a: ReferenceArgs) -> Outcome {
     let written = mdr_impact::solvers::theory::generate_reference(&a.out)?;
@@ -329,7 +367,7 @@ fn cmd_sweep(a: SweepArgs) -> Outcome {
         sweep::run(&points, out, opts, tick)
     })?;
     println!("{summary}");
-    println!("rows in {}", out.display());
+    println!("{:<28}{}", "rows written to", out.display());
     Ok(())
 }
 

@@ -5,5 +5,6 @@ pub mod lines;
 pub mod output;
 pub mod plot;
 pub mod prony_table;
+pub mod run_files;
 pub mod scene;
 pub mod scene_toml;

@@ -2,22 +2,196 @@
 
 use std::path::Path;
 
+use plotters::coord::combinators::BindKeyPoints;
 use plotters::prelude::*;
 
 use crate::error::{Error, Result};
 use crate::io::output::write_atomic;
 use crate::model::impact::History;
 
-/// Force-time plot of an impact history (time in ms, force in N) as SVG.
-pub fn force_history_svg(path: &Path, h: &History, title: &str) -> Result<()> {
-    let series = vec![(
-        "MDR".to_string(),
+/// The title of a chart and a subtitle with what it is about (the scene and its key inputs).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Caption {
+    /// What is plotted (e.g. `"Contact force against time"`).
+    pub title: String,
+    /// The scene's name and key inputs (e.g. `"default scene: m = 4.11 g, R = 5 mm, ..."`).
+    pub subtitle: String,
+}
+
+/// `x` with four significant digits, trailing zeros dropped (`4.11e-3`, `9.9e-1`, `2e0`).
+pub fn short(x: f64) -> String {
+    let s = format!("{x:.3e}");
+    match s.split_once('e') {
+        Some((m, e)) if m.contains('.') => {
+            format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.'))
+        }
+        _ => s,
+    }
+}
+
+/// A unit with an SI prefix for values up to `max` in `unit` (`max` in the base unit): the
+/// factor the values are multiplied by and the prefixed unit, so that `max` reads between 1
+/// and 1000 (`(1e3, "ms")` for `max = 2e-3` s).
+pub fn si_scale(max: f64, unit: &str) -> (f64, String) {
+    // prefixes from nano (10^-9) to giga (10^9), in steps of 10^3
+    const PREFIXES: [&str; 7] = ["n", "µ", "m", "", "k", "M", "G"];
+    let max = max.abs();
+    if !(max.is_finite() && max > 0.0) {
+        return (1.0, unit.to_string());
+    }
+    let k = ((max.log10() / 3.0).floor() as i32).clamp(-3, 3);
+    let prefix = PREFIXES[(k + 3) as usize];
+    (10f64.powi(-3 * k), format!("{prefix}{unit}"))
+}
+
+/// The force-time plot of an impact history as SVG text (time and force with SI prefixes),
+/// its one curve named `label` in the legend. Rendered in memory only; `path` names the file in
+/// errors.
+pub fn force_time_svg(path: &Path, h: &History, caption: &Caption, label: &str) -> Result<String> {
+    let t_max = h.t.iter().copied().fold(0.0, f64::max);
+    let f_max = h.force.iter().copied().fold(0.0, f64::max);
+    let (tk, tu) = si_scale(t_max, "s");
+    let (fk, fu) = si_scale(f_max, "N");
+    let pts =
         h.t.iter()
             .zip(&h.force)
-            .map(|(t, f)| (t * 1e3, *f))
-            .collect::<Vec<_>>(),
-    )];
-    line_chart_svg(path, title, "time t (ms)", "contact force F (N)", &series)
+            .map(|(t, f)| (t * tk, f * fk))
+            .collect();
+    chart_text(
+        path,
+        caption,
+        &format!("time t ({tu})"),
+        &format!("contact force F ({fu})"),
+        &[(label.to_string(), pts, RGBColor(30, 80, 200))],
+        SeriesLabelPosition::UpperRight,
+    )
+}
+
+/// The force-indentation plot of an impact history as SVG text: the loading branch (up to the
+/// largest indentation) and the unloading branch (after it) in two colours, so that the area
+/// between them, the energy dissipated in the material, shows. Rendered in memory only; `path`
+/// names the file in errors.
+pub fn force_indentation_svg(path: &Path, h: &History, caption: &Caption) -> Result<String> {
+    let peak =
+        h.d.iter()
+            .enumerate()
+            .fold(0, |k, (i, &d)| if d > h.d[k] { i } else { k });
+    let d_max = h.d.get(peak).copied().unwrap_or(0.0);
+    let f_max = h.force.iter().copied().fold(0.0, f64::max);
+    let (dk, du) = si_scale(d_max, "m");
+    let (fk, fu) = si_scale(f_max, "N");
+    let point = |i: usize| (h.d[i] * dk, h.force[i] * fk);
+    let loading = (0..=peak.min(h.len().saturating_sub(1)))
+        .map(point)
+        .collect();
+    let unloading = (peak..h.len()).map(point).collect();
+    chart_text(
+        path,
+        caption,
+        &format!("indentation d ({du})"),
+        &format!("contact force F ({fu})"),
+        &[
+            (
+                "loading (d increasing)".to_string(),
+                loading,
+                RGBColor(200, 50, 40),
+            ),
+            (
+                "unloading (d decreasing)".to_string(),
+                unloading,
+                RGBColor(30, 80, 200),
+            ),
+        ],
+        // the loop fills the right of the chart; its upper left is empty
+        SeriesLabelPosition::UpperLeft,
+    )
+}
+
+/// One named, coloured line of [`chart_text`]: legend text, points, colour.
+pub type Series = (String, Vec<(f64, f64)>, RGBColor);
+
+/// A line chart of named, coloured series as SVG text, with a title, a subtitle and a legend
+/// naming every series at `legend`. Rendered in memory only; `path` names the file in
+/// errors.
+pub fn chart_text(
+    path: &Path,
+    caption: &Caption,
+    x_label: &str,
+    y_label: &str,
+    series: &[Series],
+    legend: SeriesLabelPosition,
+) -> Result<String> {
+    let finite = series
+        .iter()
+        .flat_map(|(_, pts, _)| pts.iter())
+        .filter(|(x, y)| x.is_finite() && y.is_finite());
+    let (mut x0, mut x1, mut y0, mut y1) = (
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    );
+    for &(x, y) in finite {
+        x0 = x0.min(x);
+        x1 = x1.max(x);
+        y0 = y0.min(y);
+        y1 = y1.max(y);
+    }
+    if !(x0 < x1) {
+        return Err(Error::NotSupported {
+            solver: "plot",
+            what: "nothing to plot (no finite x range)".into(),
+        }
+        .at(path.display().to_string()));
+    }
+    if !(y0 < y1) {
+        y1 = y0 + 1.0;
+    }
+    let pad = 0.05 * (y1 - y0);
+    let e = |e: &dyn std::fmt::Display| Error::io(path, e);
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
+        root.fill(&WHITE).map_err(|x| e(&x))?;
+        let area = root
+            .titled(&caption.title, ("sans-serif", 22))
+            .map_err(|x| e(&x))?;
+        let area = area
+            .titled(
+                &caption.subtitle,
+                ("sans-serif", 15).into_font().color(&RGBColor(60, 60, 60)),
+            )
+            .map_err(|x| e(&x))?;
+        let mut chart = ChartBuilder::on(&area)
+            .margin(12)
+            .x_label_area_size(44)
+            .y_label_area_size(70)
+            .build_cartesian_2d(x0..x1, (y0 - pad)..(y1 + pad))
+            .map_err(|x| e(&x))?;
+        chart
+            .configure_mesh()
+            .x_desc(x_label)
+            .y_desc(y_label)
+            .draw()
+            .map_err(|x| e(&x))?;
+        for (name, pts, color) in series {
+            let style = color.stroke_width(2);
+            chart
+                .draw_series(LineSeries::new(pts.iter().copied(), style))
+                .map_err(|x| e(&x))?
+                .label(name.as_str())
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
+        }
+        chart
+            .configure_series_labels()
+            .position(legend)
+            .border_style(BLACK)
+            .background_style(WHITE.mix(0.85))
+            .draw()
+            .map_err(|x| e(&x))?;
+        root.present().map_err(|x| e(&x))?;
+    }
+    Ok(svg)
 }
 
 /// A line chart of one or more named series as SVG, written atomically.
@@ -202,6 +376,7 @@ pub fn panels_svg(
                         .configure_mesh()
                         .x_desc(x_label)
                         .y_desc(panel.y_label.as_str())
+                        .x_label_formatter(&|x| tick_label(*x))
                         .draw()
                         .map_err(|x| e(&x))?;
                     if !panel.shaded.spans.is_empty() {
@@ -240,7 +415,14 @@ pub fn panels_svg(
                 }};
             }
             if log {
-                draw!(builder.build_cartesian_2d((x0..x1).log_scale(), y0..y1));
+                let (bold, light) = log_ticks(x0, x1);
+                let x = (x0..x1)
+                    .log_scale()
+                    .with_key_points(bold)
+                    .with_light_points(light);
+                // room for the label of the range's upper end
+                builder.margin_right(40);
+                draw!(builder.build_cartesian_2d(x, y0..y1));
             } else {
                 draw!(builder.build_cartesian_2d(x0..x1, y0..y1));
             }
@@ -248,4 +430,44 @@ pub fn panels_svg(
         root.present().map_err(|x| e(&x))?;
     }
     Ok(svg)
+}
+
+/// The ticks of a logarithmic axis from `x0` to `x1` (`0 < x0 < x1`): labelled ones at both
+/// ends of the range and at every decade between them (a decade too close to an end to carry
+/// its own label, within a fifth of a decade, gives way to the end), and minor ones at 2..9
+/// times every decade that reaches into the range, the first and last partial decades
+/// included.
+pub fn log_ticks(x0: f64, x1: f64) -> (Vec<f64>, Vec<f64>) {
+    if !(x0 > 0.0 && x0 < x1 && x1.is_finite()) {
+        return (vec![x0, x1], Vec::new());
+    }
+    let (l0, l1) = (x0.log10(), x1.log10());
+    let mut bold = vec![x0];
+    let mut light = Vec::new();
+    for k in (l0.floor() as i32)..=(l1.ceil() as i32) {
+        let decade = 10f64.powi(k);
+        let lk = f64::from(k);
+        if lk - l0 > 0.2 && l1 - lk > 0.2 {
+            bold.push(decade);
+        }
+        for m in 1..10 {
+            let x = f64::from(m) * decade;
+            if x >= x0 && x <= x1 {
+                light.push(x);
+            }
+        }
+    }
+    bold.push(x1);
+    (bold, light)
+}
+
+/// The label of a tick: the value with at most four significant digits and no trailing zeros
+/// (`0.1`, `1`, `1000`, `0.25`), in exponent form outside 1e-3..1e5 (`1e-5`, `2.5e6`).
+pub fn tick_label(x: f64) -> String {
+    if x != 0.0 && (x.abs() < 1e-3 || x.abs() >= 1e5) {
+        return short(x);
+    }
+    // round to four significant digits, then print the shortest form of that number
+    let rounded: f64 = format!("{x:.3e}").parse().unwrap_or(x);
+    format!("{rounded}")
 }

@@ -19,6 +19,26 @@ use std::path::Path;
 use crate::error::{Error, Result};
 use crate::io::lines::parse_numeric;
 
+/// The most terms one Prony series of a scene may have (`terms`, `ratios` or a table `file`, in
+/// shear and in bulk each). The cost of a solve grows faster than linearly with the terms of
+/// `G_eq` (5000 terms took nearly 5 minutes), and published series of real polymers have a few
+/// dozen (30 for polyisobutylene, 24 for the epoxy of `scenes/`); a longer series is refused
+/// with [`Error::TooManyPronyTerms`] rather than left to run without a word.
+pub const MAX_PRONY_TERMS: usize = 1000;
+
+/// [`Error::TooManyPronyTerms`] when a series named `field` has more than [`MAX_PRONY_TERMS`]
+/// terms.
+pub fn check_term_count(field: &str, terms: usize) -> Result<()> {
+    match terms > MAX_PRONY_TERMS {
+        true => Err(Error::TooManyPronyTerms {
+            field: field.to_string(),
+            terms,
+            max: MAX_PRONY_TERMS,
+        }),
+        false => Ok(()),
+    }
+}
+
 /// The header of a Prony table file.
 pub const PRONY_HEADER: [&str; 2] = ["tau", "modulus"];
 
@@ -33,7 +53,8 @@ pub fn read_prony_table(path: &Path) -> Result<Vec<(f64, f64)>> {
 /// [`crate::model::material::rheology::ShearProny::new`] and [`crate::model::material::rheology::BulkProny::new`].
 ///
 /// Every row needs exactly two finite numbers, `tau > 0` and `modulus >= 0`; a bad row is an
-/// [`Error::Csv`] naming its physical line. At least one row is required.
+/// [`Error::Csv`] naming its physical line. At least one row is required, at most
+/// [`MAX_PRONY_TERMS`].
 ///
 /// ```
 /// # use mdr_impact::io::prony_table::parse_prony_table;
@@ -48,6 +69,7 @@ pub fn parse_prony_table(file: &str, bytes: &[u8]) -> Result<Vec<(f64, f64)>> {
         message,
     };
     let table = parse_numeric(file, bytes, &PRONY_HEADER)?;
+    check_term_count(file, table.rows.len())?;
     let mut out = Vec::with_capacity(table.rows.len());
     for r in &table.rows {
         let (tau, modulus) = (r.values[0], r.values[1]);

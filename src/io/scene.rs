@@ -41,8 +41,9 @@
 //!                                      # instantaneous + ratios
 //! ```
 //!
-//! Unknown keys are errors. Output paths are relative to the working directory; a Prony table
-//! `file` is relative to the scene file ([`Scene::load`]).
+//! Unknown keys are errors. Every path in a scene (the `[output]` files, a Prony table `file`)
+//! is relative to the folder of the scene file ([`Scene::load`]; to the working directory for
+//! text without a file, [`Scene::parse`]); an absolute path stays as it is.
 
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -182,9 +183,11 @@ pub struct Scene {
     pub impact: Impact,
     /// How to solve it.
     pub options: SolveOptions,
-    /// Where to write the history CSV, if requested.
+    /// Where to write the history CSV, if requested (relative to the scene file's folder
+    /// already joined in).
     pub history_csv: Option<PathBuf>,
-    /// Where to write the force-time plot (SVG), if requested.
+    /// Where to write the force-time plot (SVG), if requested (likewise); the force-indentation
+    /// plot `force_indentation.svg` goes beside it.
     pub plot: Option<PathBuf>,
     /// `[impact] temperature` (°C), when given.
     pub temperature: Option<f64>,
@@ -194,14 +197,15 @@ pub struct Scene {
 }
 
 impl Scene {
-    /// Parse and validate a scene from TOML text; a Prony table `file` is read relative to the
-    /// working directory (see [`Scene::parse_in`]).
+    /// Parse and validate a scene from TOML text; its paths (a Prony table `file`, the `[output]`
+    /// files) are relative to the working directory (see [`Scene::parse_in`]).
     pub fn parse(text: &str) -> Result<Self> {
         Self::parse_in(text, Path::new(""))
     }
 
-    /// Parse and validate a scene from TOML text, reading Prony table files (`file = ...` in
-    /// `[material.shear]` or `[material.bulk]`) relative to the folder `base`.
+    /// Parse and validate a scene from TOML text, with every path in it relative to the folder
+    /// `base`: Prony table files (`file = ...` in `[material.shear]` or `[material.bulk]`) and
+    /// the `[output]` files.
     pub fn parse_in(text: &str, base: &Path) -> Result<Self> {
         Self::parse_at(text, base, None)
     }
@@ -211,11 +215,14 @@ impl Scene {
     pub fn parse_at(text: &str, base: &Path, temperature: Option<f64>) -> Result<Self> {
         let raw: RawScene = toml::from_str(text).map_err(|e| {
             // one line: toml's message spans several lines with a source excerpt
-            let msg = escape_text(e.message().trim_end());
+            let msg = escape_text(&plain_types(e.message().trim_end()));
             match e.span() {
                 Some(span) => {
                     let line = text[..span.start.min(text.len())].lines().count().max(1);
-                    Error::Scene(format!("line {line}: {msg}"))
+                    match key_at(text, span.start) {
+                        Some(key) => Error::Scene(format!("line {line}: key {key}: {msg}")),
+                        None => Error::Scene(format!("line {line}: {msg}")),
+                    }
                 }
                 None => Error::Scene(msg),
             }
@@ -296,13 +303,17 @@ impl Scene {
                 ))
             }
         };
-        let history_csv = raw.output.history;
-        let plot = raw.output.plot;
-        for (field, path) in [("[output] history", &history_csv), ("[output] plot", &plot)] {
+        for (field, path) in [
+            ("[output] history", &raw.output.history),
+            ("[output] plot", &raw.output.plot),
+        ] {
             if path.as_ref().is_some_and(|p| p.as_os_str().is_empty()) {
                 return Err(Error::EmptyPath { field });
             }
         }
+        // one rule for every path in a scene: relative to the scene file's folder
+        let history_csv = raw.output.history.map(|p| base.join(p));
+        let plot = raw.output.plot.map(|p| base.join(p));
         options.history = history_csv.is_some() || plot.is_some();
         options.validate()?;
         Ok(Scene {
@@ -315,13 +326,22 @@ impl Scene {
         })
     }
 
-    /// Read and parse a scene file.
+    /// Read and parse a scene file. Its errors name the file; an out-of-range value of the
+    /// one-sphere tables also names its table (`s.toml [sphere]: radius = -5e-3 is out of
+    /// range: ...`).
     pub fn load(path: &Path) -> Result<Self> {
         let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
         let base = path.parent().unwrap_or(Path::new(""));
         Self::parse_in(&text, base).map_err(|e| match e {
             Error::Scene(m) => Error::Scene(format!("{}: {m}", path.display())),
-            other => other,
+            Error::Io { .. } | Error::Csv { .. } => e,
+            other => {
+                let place = match table_of_value(&other) {
+                    Some(table) => format!("{} {table}", path.display()),
+                    None => path.display().to_string(),
+                };
+                other.at(place)
+            }
         })
     }
 
@@ -658,6 +678,56 @@ fn material_kind(m: &RawMaterial, base: &Path) -> Result<BodyMaterial> {
     Ok(BodyMaterial::Viscoelastic(material))
 }
 
+/// A TOML message with Rust's type names in words (`expected f64` -> `expected a number`).
+fn plain_types(message: &str) -> String {
+    message
+        .replace("expected f64", "expected a number")
+        .replace("expected usize", "expected a whole number >= 0")
+        .replace("expected a boolean", "expected true or false")
+}
+
+/// The table of a scene whose value an unplaced [`Error::OutOfRange`] is about, by its field:
+/// the sphere's `mass` and `radius`, the impact's `velocity` and `temperature`, a standard
+/// solid's keys in `[material]` (errors of `[[body]]` tables and of general-material tables
+/// already carry their place).
+fn table_of_value(e: &Error) -> Option<&'static str> {
+    match e {
+        Error::OutOfRange { field, .. } => match *field {
+            "mass" | "radius" => Some("[sphere]"),
+            "velocity" | "v0" | "temperature" => Some("[impact]"),
+            "g_inf" | "g_1" | "eta" | "nu" | "poisson" | "k_0" | "density" => Some("[material]"),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
+/// The key whose value starts at byte `at` of a TOML `text`, as the user wrote it (`radius`,
+/// `sphere.radius`), with the table it is in (`[sphere] radius`), when the line reads
+/// `key = value`; `None` otherwise (the position is a key or a header itself).
+fn key_at(text: &str, at: usize) -> Option<String> {
+    let at = at.min(text.len());
+    let line_start = text[..at].rfind('\n').map_or(0, |i| i + 1);
+    let before = &text[line_start..at];
+    let (key, rest) = before.split_once('=')?;
+    let key = key.trim();
+    let bare = |c: char| c.is_ascii_alphanumeric() || matches!(c, '_' | '-' | '.' | '"' | ' ');
+    if key.is_empty() || !key.chars().all(bare) || !rest.trim().is_empty() {
+        return None;
+    }
+    // the last table header above the line
+    let table = text[..line_start]
+        .lines()
+        .rev()
+        .map(str::trim)
+        .find(|l| l.starts_with('['))
+        .map(|l| l.split('#').next().unwrap_or(l).trim());
+    Some(match table {
+        Some(t) => format!("{t} {key}"),
+        None => key.to_string(),
+    })
+}
+
 fn scene_error(message: String) -> Error {
     Error::Scene(message)
 }
@@ -819,8 +889,10 @@ fn series_of(table: Table, k: &SeriesKeys<'_>, base: &Path) -> Result<(f64, Vec<
     Ok((relaxed, pairs))
 }
 
-/// `[[a, b], ...]` as pairs; a row that is not a pair is an error naming `table key[index]`.
+/// `[[a, b], ...]` as pairs; a row that is not a pair is an error naming `table key[index]`,
+/// more than [`crate::io::prony_table::MAX_PRONY_TERMS`] rows one naming `table key`.
 fn pairs_of(table: &str, key: &str, rows: &[Vec<f64>]) -> Result<Vec<(f64, f64)>> {
+    crate::io::prony_table::check_term_count(&format!("{table} {key}"), rows.len())?;
     rows.iter()
         .enumerate()
         .map(|(i, row)| match row.as_slice() {
@@ -904,6 +976,13 @@ fn general_material(shear: &RawShear, bulk: &RawBulk, base: &Path) -> Result<Mat
             },
             base,
         )?;
+        if terms.is_empty() {
+            // a relaxing bulk without a relaxing term is an elastic one
+            return Err(scene_error(format!(
+                "[material.bulk]: no relaxing term (terms = [] or ratios = []): an elastic bulk \
+                 is k_0 = {k_inf:e} (Pa) instead of k_inf; or give at least one [k_j, theta_j]"
+            )));
+        }
         BulkInput::Prony(BulkProny::new(k_inf, &terms).map_err(|e| Table::Bulk.place("terms", e))?)
     };
     Material::general(shear, rheology).map_err(|e| Table::Bulk.place("terms", e))

@@ -9,5 +9,6 @@ pub mod geometry;
 pub mod hertz;
 pub mod impact;
 pub mod material;
+pub mod plausibility;
 pub mod tolerances;
 pub mod validity;

@@ -167,6 +167,8 @@ pub fn error_kind(e: &Error) -> &'static str {
         Error::Csv { .. } => "Csv",
         Error::NoSolver { .. } => "NoSolver",
         Error::EmptyPath { .. } => "EmptyPath",
+        Error::OutputPath { .. } => "OutputPath",
+        Error::TooManyPronyTerms { .. } => "TooManyPronyTerms",
         Error::Unsupported(_) => "Unsupported",
         Error::Parse { .. } => "Parse",
         Error::NotSupported { .. } => "NotSupported",

@@ -87,8 +87,8 @@ pub use laws::*;
 pub use output::*;
 pub use versions::*;
 
-/// Velocities of `--v0 MIN:MAX` when `N` is left out.
-pub const DEFAULT_VELOCITIES: usize = 50;
+/// Velocities of `--v0 MIN:MAX` when `N` is left out: the one default of every `--v0`.
+pub const DEFAULT_VELOCITIES: usize = crate::apps::curve::DEFAULT_VELOCITIES;
 
 /// A law whose worst relative CoR error over the range exceeds this is reported with a warning.
 pub const WARN_REL_ERROR: f64 = 0.05;

@@ -121,7 +121,10 @@ pub fn setup_model(
     taus: Vec<f64>,
 ) -> Result<(Model, Vec<Option<f64>>)> {
     let k_0 = fixes.iter().find(|f| f.name == "k_0").map(|f| f.value);
-    let model = Model::new(kind, k_0, taus)?;
+    let model = Model::new(kind, k_0, taus).map_err(|e| match e {
+        Error::OutOfRange { field: "k_0", .. } => e.at("--fix k_0"),
+        e => e,
+    })?;
     let mut fixed = vec![None; model.params.len()];
     for f in fixes.iter().filter(|f| f.name != "k_0") {
         let i = model.index(&f.name).ok_or_else(|| Error::Parse {

@@ -240,15 +240,17 @@ impl Model {
         n.join(", ")
     }
 
-    /// Whether a parameter value is allowed: moduli `0 < x < inf`, `-1 < nu <= 0.5`.
+    /// Whether a parameter value is allowed: moduli `0 < x < inf`, `-1 < nu <= 0.5`; an error
+    /// names the parameter (`--fix g_inf: value = -1e0 is out of range: ...`).
     pub fn check_value(&self, i: usize, value: f64) -> Result<f64> {
         match self.params[i].kind {
             ParamKind::Positive => crate::error::check(
-                "--fix",
+                "value",
                 value,
                 value > 0.0,
-                "0 < value < inf for a modulus (Pa) or viscosity (Pa s)",
-            ),
+                "0 < value < inf (a modulus in Pa or a viscosity in Pa s)",
+            )
+            .map_err(|e| e.at(format!("--fix {}", self.params[i].name))),
             ParamKind::Poisson => crate::error::check(
                 "--fix nu",
                 value,

@@ -501,7 +501,8 @@ fn matches(path: &Path, r: &Record, p: &Point, opts: &SweepOptions) -> Result<()
             what: format!(
             "{}: row {} (nu = {}, log10 p2 = {}, log10 p3 = {}, solver {}, rtol {}, dimensional {}) \
              was made by a different sweep than the one asked for (nu = {}, log10 p2 = {}, \
-             log10 p3 = {}, solver {}, rtol {}, dimensional {}); use another --out or start afresh",
+             log10 p3 = {}, solver {}, rtol {}, dimensional {}); use another --out, or --fresh to \
+             discard its rows and start afresh",
             path.display(),
             r.point.index,
             r.point.nu,
@@ -559,8 +560,8 @@ pub fn run(
                 .ok_or_else(|| Error::NotSupported {
                     solver: "sweep",
                     what: format!(
-                    "{}: row index {} is not in the planned sweep of {} points; use another --out \
-                     or start afresh",
+                    "{}: row index {} is not in the planned sweep of {} points; use another --out, \
+                     or --fresh to discard its rows and start afresh",
                     out.display(),
                     r.point.index,
                     points.len()

@@ -164,7 +164,8 @@ pub(super) fn parse_records(path: &Path, bytes: &[u8]) -> Result<Vec<Record>> {
             file,
             line: 1,
             message: format!(
-                "not a sweep file: header must be '{}'; use another --out or start afresh",
+                "not a sweep file: header must be '{}'; use another --out, or --fresh to discard \
+                 its rows and start afresh",
                 want.join(",")
             ),
         });
