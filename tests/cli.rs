@@ -599,7 +599,7 @@ fn indent_default_times_grid() {
     assert!(o.status.success(), "{}", stderr(&o));
     let out = String::from_utf8(o.stdout).unwrap();
     let lines: Vec<&str> = out.lines().collect();
-    assert_eq!(lines[0], "t,d,a,force");
+    assert_eq!(lines[0], "t_s,d_m,a_m,force_N");
     assert_eq!(lines.len(), 1 + mdr_impact::apps::indent::DEFAULT_TIMES);
     assert!(lines[101].starts_with("2"), "{}", lines[101]);
 }

@@ -271,7 +271,7 @@ fn scene_keys_name_every_shape_and_refuse_what_does_not_apply() {
         ),
         (
             "[indenter]\nmass = 1e-3\nshape = \"cone\"\nhalf_angle_deg = 70.0\nradius = 1e-3",
-            "radius does not apply",
+            "does not apply",
         ),
         (
             "[indenter]\nmass = 1e-3\nshape = \"cone\"\nhalf_angle_deg = 95.0",
@@ -315,4 +315,125 @@ fn every_shape_scene_round_trips_through_to_toml() {
         );
         assert_eq!(Scene::parse(&scene.to_toml()).unwrap(), scene, "{file}");
     }
+}
+
+#[test]
+fn indent_takes_every_shape_and_a_scene_material() {
+    // theory (Lee-Radok/Ting by quadrature) and the displacement-driven MDR agree on the force
+    // curve of each shape; --scene replaces the standard-solid flags
+    let dir = std::env::temp_dir();
+    let here = std::env::current_dir().unwrap();
+    let pib = here.join("scenes/polyisobutylene.toml");
+    let standard = [
+        "--g-inf", "1e6", "--g1", "1e7", "--eta", "500", "--nu", "0.5",
+    ];
+    let scene = ["--scene", pib.to_str().unwrap()];
+    for (shape, material) in [
+        (
+            vec!["--shape", "cone", "--half-angle", "70.3"],
+            &standard[..],
+        ),
+        (vec!["--shape", "flat", "--radius", "1e-4"], &standard[..]),
+        (vec!["--shape", "sphere", "--radius", "2e-6"], &standard[..]),
+        (
+            vec![
+                "--shape",
+                "power-law",
+                "--exponent",
+                "3",
+                "--coefficient",
+                "1e9",
+            ],
+            &scene[..],
+        ),
+    ] {
+        let curve = |solver: &str| {
+            let mut args = vec![
+                "indent",
+                "--history",
+                "triangle",
+                "--rate",
+                "1e-3",
+                "--peak-time",
+                "1e-3",
+                "--solver",
+                solver,
+            ];
+            args.extend(&shape);
+            args.extend(material);
+            let o = common::run(&args, &dir);
+            assert!(o.status.success(), "{args:?}: {}", common::stderr(&o));
+            let text = String::from_utf8(o.stdout).unwrap();
+            assert_eq!(text.lines().next(), Some("t_s,d_m,a_m,force_N"));
+            text.lines()
+                .skip(1)
+                .map(|l| {
+                    let v: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
+                    v[3]
+                })
+                .collect::<Vec<f64>>()
+        };
+        let (theory, mdr) = (curve("theory"), curve("mdr"));
+        let peak = theory.iter().cloned().fold(0.0, f64::max);
+        assert!(peak > 0.0, "{shape:?}");
+        let worst = theory
+            .iter()
+            .zip(&mdr)
+            .map(|(a, b)| (a - b).abs() / peak)
+            .fold(0.0, f64::max);
+        assert!(
+            worst < 1e-3,
+            "{shape:?}: theory and mdr differ by {worst:.2e} of the peak"
+        );
+    }
+    // a flag that does not apply, and the missing material
+    let o = common::run(
+        &[
+            "indent",
+            "--history",
+            "triangle",
+            "--rate",
+            "1e-3",
+            "--peak-time",
+            "1e-3",
+            "--shape",
+            "cone",
+            "--radius",
+            "1e-3",
+            "--g-inf",
+            "1e6",
+            "--g1",
+            "1e7",
+            "--eta",
+            "500",
+            "--nu",
+            "0.5",
+        ],
+        &dir,
+    );
+    assert!(!o.status.success());
+    assert!(
+        common::stderr(&o).contains("needs --half-angle"),
+        "{}",
+        common::stderr(&o)
+    );
+    let o = common::run(
+        &[
+            "indent",
+            "--history",
+            "triangle",
+            "--rate",
+            "1e-3",
+            "--peak-time",
+            "1e-3",
+            "--radius",
+            "1e-3",
+        ],
+        &dir,
+    );
+    assert!(
+        common::stderr(&o).contains("missing --g-inf"),
+        "{}",
+        common::stderr(&o)
+    );
 }

@@ -20,7 +20,8 @@ dem(scene, v0, log=False, modulus="relaxed")
 
 Classes
 -------
-Material, GeneralMaterial, Prony, Sphere, Body, Scene, ImpactResult, Curve; ``Error`` (a
+Material, GeneralMaterial, Prony, Sphere (profile: paraboloid or exact sphere), Indenter (cone,
+power law, flat punch, ...), Body, Scene, ImpactResult, Curve; ``Error`` (a
 ``ValueError``) for bad input and refused solves, with the message the command line prints.
 
 Example
@@ -47,6 +48,7 @@ from ._core import (
     Error,
     GeneralMaterial,
     ImpactResult,
+    Indenter,
     Material,
     Prony,
     Scene,
@@ -64,6 +66,7 @@ __all__ = [
     "Error",
     "GeneralMaterial",
     "ImpactResult",
+    "Indenter",
     "Material",
     "Prony",
     "Scene",

@@ -17,6 +17,7 @@ use pyo3::types::{PyDict, PyTuple};
 use mdr_impact::error::escape_text;
 use mdr_impact::io::scene::Scene as RsScene;
 use mdr_impact::model::bodies::Side;
+use mdr_impact::model::geometry::{Cap, Shape, ShapeKeys};
 use mdr_impact::model::material::{BulkInput, BulkProny, BulkRheology, ShearProny};
 use mdr_impact::{
     apps::batch, apps::curve, apps::dem, io::output, model::tolerances, report::catalogue,
@@ -508,20 +509,45 @@ fn material_object(py: Python<'_>, m: &BodyMaterial) -> PyResult<Option<Py<PyAny
 // Sphere, bodies, scenes
 // ------------------------------------------------------------------------------------------
 
-/// A rigid sphere: `mass` (kg) and `radius` (m), both `0 < x < inf`.
+/// A rigid sphere: `mass` (kg) and `radius` (m), both `0 < x < inf`; `profile` is
+/// `"paraboloid"` (Hertz, the default) or `"sphere"` (the exact cap, docs/theory.md §11).
 #[pyclass(frozen, eq, module = "mdr_impact")]
 #[derive(Debug, Clone, PartialEq)]
 struct Sphere {
     inner: RsSphere,
+    exact: bool,
+}
+
+/// `true` for `profile="sphere"`, `false` for `"paraboloid"`.
+fn exact_profile(profile: &str) -> PyResult<bool> {
+    match profile {
+        "paraboloid" => Ok(false),
+        "sphere" => Ok(true),
+        other => Err(usage(format!(
+            "profile='{}': expected 'paraboloid' (Hertz, the default) or 'sphere' (the exact cap)",
+            escape_text(other)
+        ))),
+    }
 }
 
 #[pymethods]
 impl Sphere {
     #[new]
-    fn new(mass: f64, radius: f64) -> PyResult<Self> {
+    #[pyo3(signature = (mass, radius, profile = "paraboloid"))]
+    fn new(mass: f64, radius: f64, profile: &str) -> PyResult<Self> {
         Ok(Self {
             inner: ok(RsSphere::new(mass, radius))?,
+            exact: exact_profile(profile)?,
         })
+    }
+    /// `"paraboloid"` or `"sphere"`.
+    #[getter]
+    fn profile(&self) -> &'static str {
+        if self.exact {
+            "sphere"
+        } else {
+            "paraboloid"
+        }
     }
     /// Mass (kg).
     #[getter]
@@ -535,10 +561,69 @@ impl Sphere {
     }
     fn __repr__(&self) -> String {
         format!(
-            "Sphere(mass={:?}, radius={:?})",
+            "Sphere(mass={:?}, radius={:?}, profile={:?})",
             self.inner.mass(),
-            self.inner.radius()
+            self.inner.radius(),
+            self.profile()
         )
+    }
+}
+
+/// A rigid impactor of any axisymmetric shape (docs/theory.md §11, the scene's `[indenter]`):
+/// `mass` (kg) and `shape` (`"paraboloid"`, `"sphere"`, `"cone"`, `"power-law"`, `"flat"`) with
+/// exactly the keys the shape takes: `radius` (m; paraboloid, sphere, flat punch),
+/// `half_angle_deg` (cone: degrees between the axis and the face), `exponent` and
+/// `coefficient` (power law `f = coefficient r^exponent`, coefficient in m^(1 - exponent)).
+#[pyclass(frozen, eq, module = "mdr_impact")]
+#[derive(Debug, Clone, PartialEq)]
+struct Indenter {
+    mass: f64,
+    shape: Shape,
+}
+
+#[pymethods]
+impl Indenter {
+    #[new]
+    #[pyo3(signature = (mass, shape, *, radius = None, half_angle_deg = None, exponent = None,
+        coefficient = None))]
+    fn new(
+        mass: f64,
+        shape: &str,
+        radius: Option<f64>,
+        half_angle_deg: Option<f64>,
+        exponent: Option<f64>,
+        coefficient: Option<f64>,
+    ) -> PyResult<Self> {
+        let keys = ShapeKeys {
+            radius,
+            half_angle_deg,
+            exponent,
+            coefficient,
+        };
+        let shape = Shape::from_keys(
+            shape,
+            &keys,
+            ["radius", "half_angle_deg", "exponent", "coefficient"],
+        )
+        .map_err(usage)?;
+        ok(RsSphere::without_radius(mass))?;
+        Ok(Self {
+            mass,
+            shape: ok(shape.validated())?,
+        })
+    }
+    /// Mass (kg).
+    #[getter]
+    fn mass(&self) -> f64 {
+        self.mass
+    }
+    /// The shape's name.
+    #[getter]
+    fn shape(&self) -> &'static str {
+        self.shape.name()
+    }
+    fn __repr__(&self) -> String {
+        format!("Indenter(mass={:?}, {})", self.mass, self.shape.describe())
     }
 }
 
@@ -549,6 +634,8 @@ impl Sphere {
 #[derive(Debug, Clone, PartialEq)]
 struct Body {
     inner: RsBody,
+    /// `profile="sphere"`: the exact cap.
+    exact: bool,
 }
 
 /// `e` without the body it is placed at (`Error::In`): a body is named only once it is placed in
@@ -576,14 +663,17 @@ impl Body {
 #[pymethods]
 impl Body {
     #[new]
-    #[pyo3(signature = (*, radius, material = None, mass = None, density = None, rigid = false))]
+    #[pyo3(signature = (*, radius, material = None, mass = None, density = None, rigid = false,
+        profile = "paraboloid"))]
     fn new(
         radius: f64,
         material: Option<&Bound<'_, PyAny>>,
         mass: Option<f64>,
         density: Option<f64>,
         rigid: bool,
+        profile: &str,
     ) -> PyResult<Self> {
+        let exact = exact_profile(profile)?;
         let material = match (material, rigid) {
             (Some(m), false) => body_material(m)?,
             (None, true) => BodyMaterial::Rigid,
@@ -609,7 +699,7 @@ impl Body {
             }
         }
         .map_err(|e| py_err(unsided(e)))?;
-        Ok(Self { inner })
+        Ok(Self { inner, exact })
     }
     /// Mass (kg), possibly `inf`.
     #[getter]
@@ -620,6 +710,15 @@ impl Body {
     #[getter]
     fn radius(&self) -> f64 {
         self.inner.radius()
+    }
+    /// `"paraboloid"` or `"sphere"` (the exact cap).
+    #[getter]
+    fn profile(&self) -> &'static str {
+        if self.exact {
+            "sphere"
+        } else {
+            "paraboloid"
+        }
     }
     /// True for a rigid body.
     #[getter]
@@ -659,7 +758,7 @@ struct Scene {
 impl Scene {
     #[new]
     #[pyo3(signature = (*, velocity, sphere = None, material = None, bodies = None,
-        solver = "auto", rtol = tolerances::DEFAULT_RTOL, elements = None, steps = None,
+        indenter = None, solver = "auto", rtol = tolerances::DEFAULT_RTOL, elements = None, steps = None,
         history_csv = None, plot = None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
@@ -667,6 +766,7 @@ impl Scene {
         sphere: Option<PyRef<'_, Sphere>>,
         material: Option<&Bound<'_, PyAny>>,
         bodies: Option<(PyRef<'_, Body>, PyRef<'_, Body>)>,
+        indenter: Option<PyRef<'_, Indenter>>,
         solver: &str,
         rtol: f64,
         elements: Option<usize>,
@@ -674,19 +774,50 @@ impl Scene {
         history_csv: Option<PathBuf>,
         plot: Option<PathBuf>,
     ) -> PyResult<Self> {
-        let impact = match (sphere, material, bodies) {
-            (Some(s), Some(m), None) => match body_material(m)? {
-                BodyMaterial::Viscoelastic(m) => ok(Impact::new(s.inner, velocity, m))?,
-                BodyMaterial::Rigid => unreachable!("body_material never returns Rigid"),
-            },
-            (None, None, Some((a, b))) => {
+        let half_space = |m: &Bound<'_, PyAny>| match body_material(m)? {
+            BodyMaterial::Viscoelastic(m) => Ok(m),
+            BodyMaterial::Rigid => Err(usage("a rigid half-space has no compliance".into())),
+        };
+        let impact = match (sphere, indenter, material, bodies) {
+            (Some(s), None, Some(m), None) => {
+                let shape = if s.exact {
+                    Shape::sphere(s.inner.radius())
+                } else {
+                    Shape::Paraboloid {
+                        radius: s.inner.radius(),
+                    }
+                };
+                ok(Impact::shaped(s.inner, shape, velocity, half_space(m)?))?
+            }
+            (None, Some(ind), Some(m), None) => {
+                // the nominal radius of the validity checks: a paraboloid's or sphere's
+                let nominal = match (ind.shape, ind.shape.tip_radius()) {
+                    (Shape::Paraboloid { .. } | Shape::Spheres { .. }, Some(r)) => {
+                        ok(RsSphere::new(ind.mass, r))?
+                    }
+                    _ => ok(RsSphere::without_radius(ind.mass))?,
+                };
+                ok(Impact::shaped(nominal, ind.shape, velocity, half_space(m)?))?
+            }
+            (None, None, None, Some((a, b))) => {
                 let pair = ok(TwoBodies::new(a.as_side(Side::A)?, b.as_side(Side::B)?))?;
-                ok(Impact::with_bodies(pair, velocity))?
+                let impact = ok(Impact::with_bodies(pair, velocity))?;
+                if a.exact || b.exact {
+                    let cap = |body: &Body| Cap {
+                        radius: body.inner.radius(),
+                        exact: body.exact,
+                    };
+                    ok(impact.with_shape(Shape::Spheres {
+                        caps: [cap(&a), cap(&b)],
+                    }))?
+                } else {
+                    impact
+                }
             }
             _ => {
                 return Err(usage(
-                    "give sphere and material (one sphere on a half-space) or bodies=(a, b) \
-                     (a collision)"
+                    "give sphere and material (one sphere on a half-space), indenter and \
+                     material (any other impactor) or bodies=(a, b) (a collision)"
                         .into(),
                 ))
             }
@@ -817,7 +948,13 @@ impl Scene {
     fn sphere(&self) -> Sphere {
         Sphere {
             inner: self.inner.impact.sphere(),
+            exact: matches!(self.inner.impact.shape(), Shape::Spheres { .. }),
         }
+    }
+    /// The impactor's shape: `"paraboloid"`, `"sphere"`, `"cone"`, `"power-law"` or `"flat"`.
+    #[getter]
+    fn shape(&self) -> &'static str {
+        self.inner.impact.shape().name()
     }
     /// The half-space material (`Material` or `GeneralMaterial`), `None` for two bodies.
     #[getter]
@@ -830,13 +967,19 @@ impl Scene {
     /// The two bodies `(a, b)` of a collision, else `None`.
     #[getter]
     fn bodies(&self) -> Option<(Body, Body)> {
+        let exact = match self.inner.impact.shape() {
+            Shape::Spheres { caps } => [caps[0].exact, caps[1].exact],
+            _ => [false, false],
+        };
         self.inner.impact.bodies().map(|b| {
             (
                 Body {
                     inner: b.a().clone(),
+                    exact: exact[0],
                 },
                 Body {
                     inner: b.b().clone(),
+                    exact: exact[1],
                 },
             )
         })
@@ -1160,6 +1303,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Material>()?;
     m.add_class::<GeneralMaterial>()?;
     m.add_class::<Sphere>()?;
+    m.add_class::<Indenter>()?;
     m.add_class::<Body>()?;
     m.add_class::<Scene>()?;
     m.add_class::<ImpactResult>()?;

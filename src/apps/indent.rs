@@ -5,6 +5,7 @@ use std::fmt::Write as _;
 
 use crate::error::{escape_text, Error, Result};
 use crate::io::output::fmt;
+use crate::model::geometry::Shape;
 use crate::model::material::Material;
 use crate::solvers::indentation::Prescribed;
 use crate::solvers::{force_curve, ForceCurveRow, IndentMethod};
@@ -67,11 +68,11 @@ pub fn default_times(peak_time: f64) -> Vec<f64> {
         .collect()
 }
 
-/// The force curve of a sphere of radius `radius` (m) pressed into `material` along the history
+/// The force curve of a rigid indenter of `shape` pressed into `material` along the history
 /// `kind` (rate `rate`, peak time `peak_time`) at `times` (default: [`default_times`]).
 pub fn run(
     material: &Material,
-    radius: f64,
+    shape: &Shape,
     kind: HistoryKind,
     rate: f64,
     peak_time: f64,
@@ -87,12 +88,15 @@ pub fn run(
             &default
         }
     };
-    force_curve(material, radius, &history, times, method)
+    force_curve(material, shape, &history, times, method)
 }
 
-/// The rows as CSV with header `t,d,a,force` (SI, the crate's number format).
+/// The header of [`csv`]: time (s), depth (m), contact radius (m), force (N).
+pub const CSV_HEADER: &str = "t_s,d_m,a_m,force_N";
+
+/// The rows as CSV with the header [`CSV_HEADER`] (SI, the crate's number format).
 pub fn csv(rows: &[ForceCurveRow]) -> String {
-    let mut out = String::from("t,d,a,force\n");
+    let mut out = format!("{CSV_HEADER}\n");
     for r in rows {
         let _ = writeln!(
             out,

@@ -35,7 +35,8 @@ pub enum Command {
     Dem(DemArgs),
     /// Coefficient of restitution from the dimensionless groups (Eq. 11).
     Cor(CorArgs),
-    /// Force curve of a prescribed indentation (AFM / nanoindentation): CSV t,d,a,force on stdout.
+    /// Force curve of a prescribed indentation (AFM / nanoindentation) for any indenter shape:
+    /// CSV t_s,d_m,a_m,force_N on stdout.
     Indent(IndentArgs),
     /// Run the validation catalogue and write VALIDATION.md with its figures.
     Validate(ValidateArgs),
@@ -220,21 +221,37 @@ pub struct IndentArgs {
     /// Time of the peak T (s).
     #[arg(long = "peak-time", allow_hyphen_values = true)]
     pub peak_time: f64,
-    /// Sphere radius R (m).
+    /// The indenter: paraboloid (Hertz, the default), sphere (the exact cap), cone, power-law or
+    /// flat (a flat-ended cylinder); with --scene and no --shape, the scene's indenter.
+    #[arg(long)]
+    pub shape: Option<String>,
+    /// Radius R (m) of a paraboloid or sphere, the punch radius of a flat punch.
     #[arg(long, allow_hyphen_values = true)]
-    pub radius: f64,
+    pub radius: Option<f64>,
+    /// Cone half angle (degrees between the axis and the face), e.g. 70.3 (Berkovich-equivalent).
+    #[arg(long = "half-angle", allow_hyphen_values = true)]
+    pub half_angle: Option<f64>,
+    /// Power-law exponent n of f = c r^n.
+    #[arg(long, allow_hyphen_values = true)]
+    pub exponent: Option<f64>,
+    /// Power-law coefficient c of f = c r^n (m^(1 - n)).
+    #[arg(long, allow_hyphen_values = true)]
+    pub coefficient: Option<f64>,
+    /// A scene whose half-space material (any Prony series) replaces the standard-solid flags.
+    #[arg(long, conflicts_with_all = ["g_inf", "g1", "eta", "nu"])]
+    pub scene: Option<PathBuf>,
     /// Relaxed shear modulus G_inf (Pa).
     #[arg(long = "g-inf", allow_hyphen_values = true)]
-    pub g_inf: f64,
+    pub g_inf: Option<f64>,
     /// Relaxing shear modulus G_1 (Pa).
     #[arg(long, allow_hyphen_values = true)]
-    pub g1: f64,
+    pub g1: Option<f64>,
     /// Shear viscosity eta (Pa s).
     #[arg(long, allow_hyphen_values = true)]
-    pub eta: f64,
+    pub eta: Option<f64>,
     /// Static Poisson ratio, -1 < nu <= 0.5 (0.5 = incompressible).
     #[arg(long, allow_hyphen_values = true)]
-    pub nu: f64,
+    pub nu: Option<f64>,
     /// theory (Lee-Radok/Ting) or mdr.
     #[arg(long, value_enum, default_value_t = values::Indent::Theory)]
     pub solver: values::Indent,

@@ -7,6 +7,7 @@ use mdr_impact::apps::{batch, curve, dem, dma, fit, indent, sweep};
 use mdr_impact::error::escape_text;
 use mdr_impact::io::run_files::RunFiles;
 use mdr_impact::io::{output, scene::Scene};
+use mdr_impact::model::geometry::{Shape, ShapeKeys};
 use mdr_impact::report::{bench, figures, sections, stress, validate};
 use mdr_impact::{solve, Error, Groups, Impact, Material, SolveOptions};
 
@@ -227,17 +228,47 @@ fn cmd_cor(a: CorArgs) -> Outcome {
 }
 
 fn cmd_indent(a: IndentArgs) -> Outcome {
-    let material = Material::with_poisson(a.g_inf, a.g1, a.eta, a.nu)?;
+    let scene = a.scene.as_deref().map(Scene::load).transpose()?;
+    let material = match &scene {
+        Some(s) => s
+            .impact
+            .half_space()
+            .cloned()
+            .ok_or_else(|| Error::Unsupported("indent --scene: a two-body scene has no half-space material; give a scene with [sphere] or [indenter] and [material]".into()))?,
+        None => {
+            let need = |flag: &str, v: Option<f64>| {
+                v.ok_or_else(|| {
+                    Error::Unsupported(format!(
+                        "indent: missing {flag}: give --g-inf, --g1, --eta and --nu (a standard \
+                         solid) or --scene SCENE.toml (any material)"
+                    ))
+                })
+            };
+            Material::with_poisson(
+                need("--g-inf", a.g_inf)?,
+                need("--g1", a.g1)?,
+                need("--eta", a.eta)?,
+                need("--nu", a.nu)?,
+            )?
+        }
+    };
+    let keys = ShapeKeys {
+        radius: a.radius,
+        half_angle_deg: a.half_angle,
+        exponent: a.exponent,
+        coefficient: a.coefficient,
+    };
+    let shape = match (&a.shape, &scene) {
+        (None, Some(s)) if keys.radius.is_none() => *s.impact.shape(),
+        (name, _) => Shape::from_keys(
+            name.as_deref().unwrap_or("paraboloid"),
+            &keys,
+            ["--radius", "--half-angle", "--exponent", "--coefficient"],
+        )
+        .map_err(|m| Error::Unsupported(format!("indent --shape: {m}")))?,
+    };
     let (kind, rate, peak, times) = (a.history, a.rate, a.peak_time, a.times.as_deref());
-    let rows = indent::run(
-        &material,
-        a.radius,
-        kind,
-        rate,
-        peak,
-        times,
-        a.solver.into(),
-    )?;
+    let rows = indent::run(&material, &shape, kind, rate, peak, times, a.solver.into())?;
     stdout(&indent::csv(&rows))
 }
 

@@ -50,7 +50,7 @@ use std::path::{Path, PathBuf};
 
 use crate::error::{escape_text, Error, Result};
 use crate::model::bodies::{Body, BodyMaterial, Side, TwoBodies};
-use crate::model::geometry::{Cap, Shape};
+use crate::model::geometry::{Cap, Shape, ShapeKeys};
 use crate::model::impact::{Impact, Sphere};
 use crate::model::material::shift::ShiftLaw;
 use crate::model::material::{BulkInput, BulkProny, Material, ShearProny};
@@ -389,65 +389,23 @@ fn sphere_profile(table: &str, profile: Option<&str>, radius: f64) -> Result<Sha
 /// none, `inf`, for a cone, a power law or a flat punch) and its shape, with exactly the keys its
 /// shape needs.
 fn indenter_of(raw: &RawIndenter) -> Result<(Sphere, Shape)> {
-    let need = |key: &str, v: Option<f64>| {
-        v.ok_or_else(|| {
-            scene_error(format!(
-                "[indenter] shape = \"{}\" needs {key}",
-                escape_text(&raw.shape)
-            ))
-        })
+    let keys = ShapeKeys {
+        radius: raw.radius,
+        half_angle_deg: raw.half_angle_deg,
+        exponent: raw.exponent,
+        coefficient: raw.coefficient,
     };
-    let (shape, keys): (Shape, &[&str]) = match raw.shape.as_str() {
-        "paraboloid" => (
-            Shape::Paraboloid {
-                radius: need("radius (m)", raw.radius)?,
-            },
-            &["radius"],
-        ),
-        "sphere" => (Shape::sphere(need("radius (m)", raw.radius)?), &["radius"]),
-        "flat" => (
-            Shape::Flat {
-                radius: need("radius (m)", raw.radius)?,
-            },
-            &["radius"],
-        ),
-        "cone" => (
-            Shape::Cone {
-                half_angle_deg: need(
-                    "half_angle_deg (degrees between the axis and the face)",
-                    raw.half_angle_deg,
-                )?,
-            },
-            &["half_angle_deg"],
-        ),
-        "power-law" => (
-            Shape::PowerLaw {
-                exponent: need("exponent", raw.exponent)?,
-                coefficient: need("coefficient (m^(1 - exponent))", raw.coefficient)?,
-            },
-            &["exponent", "coefficient"],
-        ),
-        other => {
-            return Err(scene_error(format!(
-            "[indenter] shape = '{}': expected one of paraboloid, sphere, cone, power-law, flat",
-            escape_text(other)
-        )))
-        }
-    };
-    for (key, v) in [
-        ("radius", raw.radius),
-        ("half_angle_deg", raw.half_angle_deg),
-        ("exponent", raw.exponent),
-        ("coefficient", raw.coefficient),
-    ] {
-        if v.is_some() && !keys.contains(&key) {
-            return Err(scene_error(format!(
-                "[indenter] {key} does not apply to shape = \"{}\" (it takes {})",
-                escape_text(&raw.shape),
-                keys.join(", ")
-            )));
-        }
-    }
+    let shape = Shape::from_keys(
+        &raw.shape,
+        &keys,
+        [
+            "radius (m)",
+            "half_angle_deg (degrees between the axis and the face)",
+            "exponent",
+            "coefficient (m^(1 - exponent))",
+        ],
+    )
+    .map_err(|m| scene_error(format!("[indenter] {m}")))?;
     let shape = shape
         .validated()
         .map_err(|e| scene_error(format!("[indenter] {e}")))?;

@@ -274,6 +274,99 @@ impl Shape {
     }
 }
 
+/// The parameters a shape may be given with (a scene's `[indenter]` keys, the `indent` flags),
+/// and the names the caller gives them in messages (in the order radius, half angle, exponent,
+/// coefficient).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ShapeKeys {
+    /// Radius (m) of a paraboloid, a sphere or a flat punch.
+    pub radius: Option<f64>,
+    /// Half angle of a cone (degrees).
+    pub half_angle_deg: Option<f64>,
+    /// Exponent of a power law.
+    pub exponent: Option<f64>,
+    /// Coefficient of a power law (m^(1 - exponent)).
+    pub coefficient: Option<f64>,
+}
+
+/// The shape names [`Shape::from_keys`] accepts.
+pub const SHAPE_NAMES: [&str; 5] = ["paraboloid", "sphere", "cone", "power-law", "flat"];
+
+impl Shape {
+    /// The shape `name` (one of [`SHAPE_NAMES`]) from exactly the keys it takes: a missing key,
+    /// a key that does not apply or an unknown name is a message naming it as `names` does
+    /// (the caller's spelling of radius, half angle, exponent, coefficient); the values are
+    /// range-checked ([`Shape::validated`]) by the caller.
+    pub fn from_keys(
+        name: &str,
+        keys: &ShapeKeys,
+        names: [&str; 4],
+    ) -> std::result::Result<Shape, String> {
+        let given = [
+            keys.radius,
+            keys.half_angle_deg,
+            keys.exponent,
+            keys.coefficient,
+        ];
+        let need = |i: usize| given[i].ok_or_else(|| format!("shape {name} needs {}", names[i]));
+        let (shape, takes): (Shape, &[usize]) = match name {
+            "paraboloid" => (Shape::Paraboloid { radius: need(0)? }, &[0]),
+            "sphere" => (Shape::sphere(need(0)?), &[0]),
+            "flat" => (Shape::Flat { radius: need(0)? }, &[0]),
+            "cone" => (
+                Shape::Cone {
+                    half_angle_deg: need(1)?,
+                },
+                &[1],
+            ),
+            "power-law" => (
+                Shape::PowerLaw {
+                    exponent: need(2)?,
+                    coefficient: need(3)?,
+                },
+                &[2, 3],
+            ),
+            other => {
+                return Err(format!(
+                    "unknown shape '{}': expected one of {}",
+                    crate::error::escape_text(other),
+                    SHAPE_NAMES.join(", ")
+                ))
+            }
+        };
+        if let Some(i) = (0..4).find(|i| given[*i].is_some() && !takes.contains(i)) {
+            let list: Vec<&str> = takes.iter().map(|i| names[*i]).collect();
+            return Err(format!(
+                "{} does not apply to shape {name} (it takes {})",
+                names[i],
+                list.join(", ")
+            ));
+        }
+        Ok(shape)
+    }
+
+    /// The shape's geometry in SI (lengths in m: the canonical form with `L = A = 1 m`), for a
+    /// prescribed indentation ([`crate::solvers::force_curve`]).
+    pub fn geometry_si(&self) -> Geometry {
+        match *self {
+            Shape::Paraboloid { radius } => Geometry::Paraboloid { radius },
+            Shape::Spheres { caps } => Geometry::Caps { scale: 1.0, caps },
+            Shape::Cone { half_angle_deg } => Geometry::PowerLaw {
+                exponent: 1.0,
+                coefficient: power_law_stretch(1.0) / half_angle_deg.to_radians().tan(),
+            },
+            Shape::PowerLaw {
+                exponent,
+                coefficient,
+            } => Geometry::PowerLaw {
+                exponent,
+                coefficient: power_law_stretch(exponent) * coefficient,
+            },
+            Shape::Flat { radius } => Geometry::Flat { radius },
+        }
+    }
+}
+
 /// `k_n = sqrt(pi) Γ(n/2 + 1) / Γ(n/2 + 1/2)`: the MDR profile of `f = c r^n` is `k_n c x^n`.
 pub fn power_law_stretch(n: f64) -> f64 {
     use statrs::function::gamma::ln_gamma;
@@ -284,7 +377,14 @@ fn power_law_scales(ln_e: f64, n: f64, c: f64) -> (f64, f64, Geometry) {
     let ln_kc = power_law_stretch(n).ln() + c.ln();
     let ln_a = (ln_e - 2.0 * ln_kc) / (2.0 * n + 1.0);
     let ln_l = ln_kc + n * ln_a;
-    (ln_l.exp(), ln_a.exp(), Geometry::PowerLaw { exponent: n })
+    (
+        ln_l.exp(),
+        ln_a.exp(),
+        Geometry::PowerLaw {
+            exponent: n,
+            coefficient: 1.0,
+        },
+    )
 }
 
 /// The shape of the indenter, as the MDR sees it, in canonical units (module docs): the
@@ -298,10 +398,13 @@ pub enum Geometry {
         /// Radius of curvature `R` (1 in canonical units).
         radius: f64,
     },
-    /// The power law `g(x) = x^n`, `a = d^(1/n)`, `w = (3/2) n/(n+1) a d` (the cone: `n = 1`).
+    /// The power law `g(x) = k x^n`, `a = (d/k)^(1/n)`, `w = (3/2) n/(n+1) a d` (the cone:
+    /// `n = 1`; `k = 1` in canonical units, `k_n c` in SI).
     PowerLaw {
         /// `n`.
         exponent: f64,
+        /// `k`.
+        coefficient: f64,
     },
     /// The flat punch: `g = 0` for `x < radius`, `a = radius`, `w = (3/2) radius d`.
     Flat {
@@ -349,7 +452,10 @@ impl Geometry {
     pub fn profile(&self, x: f64) -> f64 {
         match *self {
             Geometry::Paraboloid { radius } => x * x / radius,
-            Geometry::PowerLaw { exponent } => x.powf(exponent),
+            Geometry::PowerLaw {
+                exponent,
+                coefficient,
+            } => coefficient * x.powf(exponent),
             Geometry::Flat { radius } => {
                 if x < radius {
                     0.0
@@ -381,7 +487,10 @@ impl Geometry {
     fn profile_slope(&self, x: f64) -> f64 {
         match *self {
             Geometry::Paraboloid { radius } => 2.0 * x / radius,
-            Geometry::PowerLaw { exponent } => exponent * x.powf(exponent - 1.0),
+            Geometry::PowerLaw {
+                exponent,
+                coefficient,
+            } => coefficient * exponent * x.powf(exponent - 1.0),
             Geometry::Flat { .. } => 0.0,
             Geometry::Caps { scale, caps } => {
                 let mut s = 0.0;
@@ -412,19 +521,23 @@ impl Geometry {
         }
         match *self {
             Geometry::Paraboloid { radius } => (radius * d).sqrt(),
-            Geometry::PowerLaw { exponent } => d.powf(1.0 / exponent),
+            Geometry::PowerLaw {
+                exponent,
+                coefficient,
+            } => (d / coefficient).powf(1.0 / exponent),
             Geometry::Flat { radius } => radius,
-            Geometry::Caps { caps, .. } => {
-                // g lies above its paraboloid x^2 (g(x) >= x^2 in these units), so
-                // sqrt(d) bounds a from above; Newton from above on the convex increasing g
-                // converges monotonically.
+            Geometry::Caps { scale, caps } => {
+                // g lies above its paraboloid x^2 scale Σ 1/R_i (x^2 in canonical units), so
+                // that paraboloid's contact radius bounds a from above; Newton from above on the
+                // convex increasing g converges monotonically.
                 let edge = caps
                     .iter()
                     .filter(|c| c.exact)
                     .map(|c| c.radius)
                     .fold(f64::INFINITY, f64::min)
                     * CAP_EDGE;
-                let mut a = d.sqrt().min(edge);
+                let curvature: f64 = caps.iter().map(|c| scale / c.radius).sum();
+                let mut a = (d / curvature).sqrt().min(edge);
                 for _ in 0..200 {
                     let f = self.profile(a) - d;
                     if f <= 0.0 {
@@ -458,9 +571,10 @@ impl Geometry {
         }
         match *self {
             Geometry::Paraboloid { radius } => radius.sqrt() * d.powf(1.5),
-            Geometry::PowerLaw { exponent } => {
-                1.5 * exponent / (exponent + 1.0) * d.powf(1.0 / exponent) * d
-            }
+            Geometry::PowerLaw {
+                exponent,
+                coefficient,
+            } => 1.5 * exponent / (exponent + 1.0) * (d / coefficient).powf(1.0 / exponent) * d,
             Geometry::Flat { radius } => 1.5 * radius * d,
             Geometry::Caps { scale, caps } => {
                 let a = self.contact_radius(d);
@@ -562,8 +676,14 @@ mod tests {
     fn force_function_is_the_integral_of_the_profile() {
         let shapes = [
             Geometry::UNIT_SPHERE,
-            Geometry::PowerLaw { exponent: 1.0 },
-            Geometry::PowerLaw { exponent: 3.5 },
+            Geometry::PowerLaw {
+                exponent: 1.0,
+                coefficient: 1.0,
+            },
+            Geometry::PowerLaw {
+                exponent: 3.5,
+                coefficient: 2.5,
+            },
             Shape::sphere(1e-3).canonical(1e-3, 1.0, 1e6).2,
             Shape::Spheres {
                 caps: [

@@ -180,24 +180,27 @@ pub struct ForceCurveRow {
     pub force: f64,
 }
 
-/// Force curve of a rigid sphere of radius `radius` (m) pressed into `material` along `history`
-/// (SI), at `times` (s, sorted), by Lee–Radok/Ting theory or by the displacement-driven MDR.
+/// Force curve of a rigid indenter of `shape` (SI) pressed into `material` along `history` (SI),
+/// at `times` (s, sorted), by Lee–Radok/Ting theory or by the displacement-driven MDR.
 pub fn force_curve(
     material: &crate::model::material::Material,
-    radius: f64,
+    shape: &crate::model::geometry::Shape,
     history: &crate::solvers::indentation::Prescribed,
     times: &[f64],
     method: IndentMethod,
 ) -> Result<Vec<ForceCurveRow>> {
     let prony = material.equivalent_relaxation()?;
+    let geometry = shape.validated()?.geometry_si();
     let row = |t, d, a, force| ForceCurveRow { t, d, a, force };
     let rows: Vec<ForceCurveRow> = match method {
-        IndentMethod::Theory => theory::response(&prony, radius, history, times)?
-            .into_iter()
-            .map(|s| row(s.t, s.d, s.a, s.force))
-            .collect(),
+        IndentMethod::Theory => {
+            theory::viscoelastic::response_on(&geometry, &prony, history, times)?
+                .into_iter()
+                .map(|s| row(s.t, s.d, s.a, s.force))
+                .collect()
+        }
         IndentMethod::Mdr => {
-            mdr::indent::response(&prony, radius, history, times, Default::default())?
+            mdr::indent::response_on(&geometry, &prony, history, times, Default::default())?
                 .into_iter()
                 .map(|s| row(s.t, s.d, s.a, s.force))
                 .collect()

@@ -246,7 +246,7 @@ pub fn run(opts: &ValidateOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
     w(&mut md, &shapes::shapes_table()?.markdown());
     let mut t = Table::new(&[
         "a_max / R",
-        "F_sphere / F_paraboloid - 1",
+        "max force, abs(sphere / paraboloid - 1)",
         "difference / (a/R)^2",
     ]);
     for (ar, diff, c) in shapes::sphere_limit()? {

@@ -217,14 +217,11 @@ pub fn max_difference(o: &Outcome, truth: &Outcome) -> f64 {
 /// The section's materials: the elastic half-space, a standard solid, a three-term material and
 /// the polyisobutylene spectrum of `scenes/polyisobutylene.toml` (30 terms).
 fn materials() -> Result<Vec<(&'static str, Material, f64)>> {
-    let pib = crate::io::scene::Scene::parse(include_str!("../../../scenes/polyisobutylene.toml"))?;
-    let pib = pib
-        .impact
-        .half_space()
-        .cloned()
-        .ok_or(crate::Error::Internal(
-            "polyisobutylene scene is a half-space",
-        ))?;
+    let pib = crate::report::catalogue::general_entries()?
+        .into_iter()
+        .find(|e| e.id == "polyisobutylene")
+        .ok_or(crate::Error::Internal("catalogue: no polyisobutylene"))?
+        .material;
     let three = ShearProny::new(1.0e6, &[(4.0e6, 1e-5), (3.0e6, 2e-4), (2.0e6, 3e-3)])?;
     Ok(vec![
         ("elastic (closed form)", elastic()?, 0.8),

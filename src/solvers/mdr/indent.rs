@@ -57,6 +57,19 @@ pub fn response(
     res: IndentResolution,
 ) -> Result<Vec<IndentSample>> {
     crate::error::check("radius", radius, radius > 0.0, "0 < radius < inf (m)")?;
+    response_on(&Geometry::Paraboloid { radius }, prony, history, times, res)
+}
+
+/// [`response`] for any axisymmetric indenter `geometry` (SI): the elements sit on its `g(x)`
+/// (graded or fitted to a flat punch as in the impact, [`Foundation`]); a flat punch's contact
+/// radius is its radius until the separation.
+pub fn response_on(
+    geometry: &Geometry,
+    prony: &Prony,
+    history: &Prescribed,
+    times: &[f64],
+    res: IndentResolution,
+) -> Result<Vec<IndentSample>> {
     if res.elements < 2 || res.elements > tolerances::MDR_MAX_ELEMENTS {
         return Err(Error::OutOfRange {
             field: "elements",
@@ -83,9 +96,15 @@ pub fn response(
     if let Some(&t0) = times.first() {
         crate::error::check("times", t0, t0 >= 0.0, "sorted non-decreasing times >= 0")?;
     }
-    let a_max = (radius * history.peak_depth()).sqrt();
+    let a_max = geometry.contact_radius(history.peak_depth());
     let dx = a_max / res.elements as f64;
-    let geom = Foundation::new(dx, &Geometry::Paraboloid { radius }, res.elements + 2);
+    // the paraboloid's elements end at a_max; a graded grid maps over four times that
+    // (Foundation), and a flat punch's never exceed its radius
+    let capacity = match geometry {
+        Geometry::Paraboloid { .. } => res.elements + 2,
+        _ => 4 * res.elements + 16,
+    };
+    let geom = Foundation::new(dx, geometry, capacity);
     let mut f = ExpFoundation::new(geom, prony);
     let end = history.end_time();
     let dt_target = end / res.steps as f64;
@@ -149,8 +168,8 @@ pub fn response(
             d = d1;
             let (force, a) = if separated {
                 (0.0, 0.0)
-            } else if compression {
-                (f.force_now(d).max(0.0), (radius * d).sqrt())
+            } else if compression || geometry.is_flat() {
+                (f.force_now(d).max(0.0), geometry.contact_radius(d))
             } else {
                 (f.force_now(d).max(0.0), f.edge_radius(d))
             };

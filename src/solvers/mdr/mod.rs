@@ -65,7 +65,7 @@ impl Foundation {
         let (dx, grade) = match *geometry {
             Geometry::Flat { radius } => (radius / (radius / dx).round().max(1.0), 1.0),
             // x = s^p with s of the order of the contact radius: the same element count
-            Geometry::PowerLaw { exponent } if exponent < 2.0 => {
+            Geometry::PowerLaw { exponent, .. } if exponent < 2.0 => {
                 let p = 2.0 / exponent;
                 (dx, p)
             }

@@ -31,6 +31,7 @@ use crate::error::{check, Error, Result};
 use crate::math::quad::{integrate, layer_splits};
 use crate::math::roots::newton_bracketed;
 use crate::math::special::x_minus_dawson;
+use crate::model::geometry::Geometry;
 use crate::model::material::Prony;
 use crate::solvers::indentation::Prescribed;
 
@@ -100,8 +101,10 @@ fn splits<H: OneMaximum + ?Sized>(prony: &Prony, h: &H, a: f64, b: f64, t: f64) 
     v
 }
 
-/// `int_0^t G_eq(t-s) d/ds[d^(3/2)] ds` by quadrature (no `16 sqrt(R)/3` factor).
+/// `int_0^upper G_eq(t-s) d/ds[w(d(s))] ds` by quadrature (no `16/3` factor; the paraboloid's
+/// `w = sqrt(R) d^(3/2)`).
 fn hereditary_phi<H: OneMaximum + ?Sized>(
+    geometry: &Geometry,
     prony: &Prony,
     h: &H,
     upper: f64,
@@ -110,11 +113,11 @@ fn hereditary_phi<H: OneMaximum + ?Sized>(
     if upper <= 0.0 {
         return Ok((0.0, 0));
     }
-    let scale = prony.glassy() * h.depth(h.peak_time()).powf(1.5);
+    let scale = prony.glassy() * geometry.force_function(h.depth(h.peak_time()));
     let sp = splits(prony, h, 0.0, upper, t);
     let q = integrate(
         "Lee-Radok force integrand",
-        |s| 1.5 * h.depth(s).max(0.0).sqrt() * h.rate(s) * prony.eval(t - s),
+        |s| geometry.force_slope(h.depth(s)) * h.rate(s) * prony.eval(t - s),
         0.0,
         upper,
         &sp,
@@ -169,6 +172,12 @@ fn hereditary_d<H: OneMaximum + ?Sized>(
 /// Elastic series (no terms) give `t_s = end` exactly when the history returns to zero there.
 pub fn separation_time<H: OneMaximum + ?Sized>(prony: &Prony, radius: f64, h: &H) -> Result<f64> {
     check_inputs(prony, radius)?;
+    separation_time_of(prony, h)
+}
+
+/// [`separation_time`] of any indenter: the separation does not depend on the shape.
+fn separation_time_of<H: OneMaximum + ?Sized>(prony: &Prony, h: &H) -> Result<f64> {
+    prony.validate()?;
     let (tm, end) = (h.peak_time(), h.end_time());
     if prony.is_elastic() {
         return Ok(end);
@@ -222,9 +231,26 @@ pub fn response<H: OneMaximum + ?Sized>(
     times: &[f64],
 ) -> Result<Vec<IndentSample>> {
     check_inputs(prony, radius)?;
+    response_on(&Geometry::Paraboloid { radius }, prony, history, times)
+}
+
+/// [`response`] for any axisymmetric indenter `geometry` (SI, [`Shape::geometry_si`]): the
+/// force integrand `w'(d) d'(s) G_eq(t - s)` with `w' = (3/2) a(d)` (docs/theory.md §11), the
+/// contact radius `a(d(t_1))`; a flat punch has no Ting phase (its force is the compression
+/// integral up to `t` until the separation).
+///
+/// [`Shape::geometry_si`]: crate::model::geometry::Shape::geometry_si
+pub fn response_on<H: OneMaximum + ?Sized>(
+    geometry: &Geometry,
+    prony: &Prony,
+    history: &H,
+    times: &[f64],
+) -> Result<Vec<IndentSample>> {
+    prony.validate()?;
     let tm = history.peak_time();
-    let ts = separation_time(prony, radius, history)?;
-    let pref = 16.0 * radius.sqrt() / 3.0;
+    let ts = separation_time_of(prony, history)?;
+    let pref = 16.0 / 3.0;
+    let flat = geometry.is_flat();
     let mut out = Vec::with_capacity(times.len());
     let mut guess: Option<f64> = None;
     for &t in times {
@@ -245,12 +271,12 @@ pub fn response<H: OneMaximum + ?Sized>(
             });
             continue;
         }
-        if t <= tm {
-            let (f, _) = hereditary_phi(prony, history, t, t)?;
+        if t <= tm || flat {
+            let (f, _) = hereditary_phi(geometry, prony, history, t, t)?;
             out.push(IndentSample {
                 t,
                 d,
-                a: (radius * d).sqrt(),
+                a: geometry.contact_radius(d),
                 force: pref * f,
                 t1: t,
             });
@@ -258,11 +284,11 @@ pub fn response<H: OneMaximum + ?Sized>(
         }
         let t1 = ting_t1(prony, history, t, guess)?;
         guess = Some(t1);
-        let (f, _) = hereditary_phi(prony, history, t1, t)?;
+        let (f, _) = hereditary_phi(geometry, prony, history, t1, t)?;
         out.push(IndentSample {
             t,
             d,
-            a: (radius * history.depth(t1)).sqrt(),
+            a: geometry.contact_radius(history.depth(t1)),
             force: pref * f,
             t1,
         });
