@@ -199,9 +199,56 @@ pub fn run(
         ModulusChoice::Glassy => c.limits.glassy_modulus,
     };
     let sphere = impact.sphere();
-    let contact = HertzContact::new(sphere.mass(), sphere.radius(), e_star)?;
+    let (radius, shape_note) = hertz_radius(impact, opts, range)?;
+    let contact = HertzContact::new(sphere.mass(), radius, e_star)?;
     let (geometry, note) = geometry(impact);
-    fit(c.rows, range.log, modulus, contact, geometry, note)
+    let mut report = fit(c.rows, range.log, modulus, contact, geometry, note)?;
+    report.warnings.extend(shape_note);
+    Ok(report)
+}
+
+/// The radius of the Hertz contact the DEM laws assume: the impactor's radius of curvature
+/// (paraboloid, exact sphere), or, for a cone, a power law or a flat punch, the radius of the
+/// paraboloid through the contact edge at the maximum compression of the middle velocity of
+/// `range`, `R = a_max^2 / d_max`, with a warning that says what the Hertzian laws miss.
+fn hertz_radius(
+    impact: &Impact,
+    opts: &SolveOptions,
+    range: &VelocityRange,
+) -> Result<(f64, Option<String>)> {
+    if let Some(r) = impact.shape().tip_radius() {
+        let note = matches!(
+            impact.shape(),
+            crate::model::geometry::Shape::Spheres { .. }
+        )
+        .then(|| {
+            "the DEM codes' Hertz laws are the paraboloid's: with a contact radius near the \
+             sphere's they overestimate the force at a given overlap (docs/theory.md §12)"
+                .to_string()
+        });
+        return Ok((r, note));
+    }
+    let v_mid = if range.log {
+        (range.min * range.max).sqrt()
+    } else {
+        0.5 * (range.min + range.max)
+    };
+    let o = crate::solvers::solve(&impact.at_velocity(v_mid)?, opts)?;
+    let r = o.max_contact_radius * o.max_contact_radius / o.max_indentation;
+    Ok((
+        r,
+        Some(format!(
+            "the impactor is a {} and the DEM codes' laws are Hertzian (force ~ overlap^(3/2)): \
+             they stand in with the paraboloid through the contact edge at {v_mid:.3e} m/s, \
+             R = {r:.4e} m; the force-overlap curve differs in shape (use --modulus fit to \
+             match the contact times)",
+            match impact.shape().name() {
+                "flat" => "flat punch",
+                "power-law" => "power-law indenter",
+                other => other,
+            }
+        )),
+    ))
 }
 
 /// The effective modulus `E*` (Pa) at which the two laws' contact times best match ours in

@@ -12,6 +12,7 @@ use std::path::Path;
 
 use crate::error::{escape_text, Error, Result};
 use crate::io::scene::Scene;
+use crate::model::geometry::Shape;
 use crate::model::impact::Sphere;
 
 /// The columns a data file may have.
@@ -42,13 +43,49 @@ pub struct Observation {
     pub contact_time_sd: Option<f64>,
 }
 
+/// What was dropped: a sphere (its mass and nominal radius) and its shape (Hertz's paraboloid of
+/// that radius unless the scene says otherwise, docs/theory.md §11).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Impactor {
+    /// Mass (kg) and nominal radius (m, `inf` for a cone, a power law or a flat punch).
+    pub sphere: Sphere,
+    /// The shape.
+    pub shape: Shape,
+}
+
+impl From<Sphere> for Impactor {
+    fn from(sphere: Sphere) -> Self {
+        Self {
+            sphere,
+            shape: Shape::Paraboloid {
+                radius: sphere.radius(),
+            },
+        }
+    }
+}
+
+impl Impactor {
+    /// The radius of curvature the fit's starting values use: the shape's tip radius, or for a
+    /// shape without one the paraboloid through the contact edge at the canonical indentation
+    /// of an impact at `v0` on 1 MPa (`A^2 / L`, [`Shape::canonical`]): starting values only.
+    pub fn start_radius(&self, v0: f64) -> f64 {
+        match self.shape.tip_radius() {
+            Some(r) => r,
+            None => {
+                let (l, a, _) = self.shape.canonical(self.sphere.mass(), v0, 1.0e6);
+                a * a / l
+            }
+        }
+    }
+}
+
 /// A sphere a data set was measured with, and the name it was given.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Setup {
     /// The scene's path as written in the data (or `--scene`, or `default`).
     pub name: String,
-    /// The sphere.
-    pub sphere: Sphere,
+    /// The impactor.
+    pub sphere: Impactor,
 }
 
 /// Validated drop-test data.
@@ -151,8 +188,8 @@ impl Data {
     }
 }
 
-/// The sphere of a scene; two-body scenes are refused (`fit` identifies one half-space).
-pub fn scene_sphere(scene: &Scene, name: &str) -> Result<Sphere> {
+/// The impactor of a scene; two-body scenes are refused (`fit` identifies one half-space).
+pub fn scene_sphere(scene: &Scene, name: &str) -> Result<Impactor> {
     if scene.impact.bodies().is_some() {
         return Err(Error::NotSupported {
             solver: "fit",
@@ -160,17 +197,20 @@ pub fn scene_sphere(scene: &Scene, name: &str) -> Result<Sphere> {
         }
         .at(escape_text(name)));
     }
-    Ok(scene.impact.sphere())
+    Ok(Impactor {
+        sphere: scene.impact.sphere(),
+        shape: *scene.impact.shape(),
+    })
 }
 
 /// Read `path`; rows without a `setup` use `default` (named `default_name`).
-pub fn read(path: &Path, default: Sphere, default_name: &str) -> Result<Data> {
+pub fn read(path: &Path, default: impl Into<Impactor>, default_name: &str) -> Result<Data> {
     let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
     let base = path.parent().unwrap_or(Path::new(""));
     parse(
         &text,
         &path.display().to_string(),
-        default,
+        default.into(),
         default_name,
         &|name| {
             let p = base.join(name);
@@ -184,10 +224,11 @@ pub fn read(path: &Path, default: Sphere, default_name: &str) -> Result<Data> {
 pub fn parse(
     text: &str,
     file: &str,
-    default: Sphere,
+    default: impl Into<Impactor>,
     default_name: &str,
-    load: &dyn Fn(&str) -> Result<Sphere>,
+    load: &dyn Fn(&str) -> Result<Impactor>,
 ) -> Result<Data> {
+    let default = default.into();
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut reader = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)

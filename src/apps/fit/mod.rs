@@ -72,7 +72,7 @@ use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt, TerminationRe
 use nalgebra_lm::{storage::Owned, DMatrix as LmMatrix, DVector as LmVector, Dyn};
 
 use crate::error::{Error, Result};
-use crate::model::impact::{Impact, Sphere};
+use crate::model::impact::Impact;
 use crate::model::tolerances::{
     FIT_FD_STEP, FIT_LM_PATIENCE, FIT_LM_STARTS, FIT_LM_TOL, FIT_MAX_HALF_WIDTH,
     FIT_NULL_COMPONENT, FIT_NULL_RATIO, FIT_PROFILE_STEP, FIT_PROFILE_STEPS, FIT_RTOL,
@@ -497,10 +497,11 @@ fn ssr(r: &[f64]) -> f64 {
 /// The Hertz shear modulus (Pa, incompressible) that gives contact time `t_c` (s) at `v0` for
 /// `sphere` (docs/theory.md §6: `t_c = 2.943 d_max / v0`, `d_max = (5 m v0^2 / (4 k))^(2/5)`,
 /// `k = (16/3) G sqrt(R)`).
-pub fn hertz_modulus(sphere: Sphere, v0: f64, t_c: f64) -> f64 {
+pub fn hertz_modulus(sphere: impl Into<data::Impactor>, v0: f64, t_c: f64) -> f64 {
+    let sphere = sphere.into();
     let d_max = t_c * v0 / (2.0 * crate::model::hertz::HERTZ_I);
-    let k = 5.0 * sphere.mass() * v0 * v0 / (4.0 * d_max.powf(2.5));
-    3.0 * k / (16.0 * sphere.radius().sqrt())
+    let k = 5.0 * sphere.sphere.mass() * v0 * v0 / (4.0 * d_max.powf(2.5));
+    3.0 * k / (16.0 * sphere.start_radius(v0).sqrt())
 }
 
 /// `p3 / (eta / g_inf^(3/5)) = (v R / m^2)^(1/5)` at the data's mean velocity (geometric) and
@@ -509,7 +510,8 @@ fn p3_scale(data: &Data) -> f64 {
     let n = data.observations.len().max(1) as f64;
     let v_ref = (data.observations.iter().map(|o| o.v0.ln()).sum::<f64>() / n).exp();
     let sphere = data.setups[data.observations.first().map_or(0, |o| o.setup)].sphere;
-    (v_ref * sphere.radius() / (sphere.mass() * sphere.mass())).powf(0.2)
+    let (m, r) = (sphere.sphere.mass(), sphere.start_radius(v_ref));
+    (v_ref * r / (m * m)).powf(0.2)
 }
 
 /// Starting values over the sensible box (see the module docs), with the fixed values kept.
@@ -517,7 +519,7 @@ fn candidates(model: &Model, data: &Data, fixed: &[Option<f64>], hold: bool) -> 
     let n = data.observations.len() as f64;
     let v_ref = (data.observations.iter().map(|o| o.v0.ln()).sum::<f64>() / n).exp();
     let sphere = data.setups[data.observations[0].setup].sphere;
-    let (m, r) = (sphere.mass(), sphere.radius());
+    let (m, r) = (sphere.sphere.mass(), sphere.start_radius(v_ref));
     let hertz: Vec<f64> = data
         .observations
         .iter()
@@ -739,7 +741,8 @@ impl FitResult {
 
     /// Fitted CoR and contact time of `sphere` at `v0` with their standard deviations from the
     /// covariance (delta method; `None` without one). `solves` counts the forward solves.
-    pub fn predict(&self, sphere: Sphere, v0: f64) -> Result<Prediction> {
+    pub fn predict(&self, sphere: impl Into<data::Impactor>, v0: f64) -> Result<Prediction> {
+        let sphere = sphere.into();
         let opts = SolveOptions {
             rtol: FIT_RTOL,
             ..Default::default()

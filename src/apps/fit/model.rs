@@ -6,7 +6,7 @@
 //! incompressible limit `nu = 0.5` is approached as `z -> inf`; fix `nu=0.5` to impose it).
 
 use crate::error::{Error, Result};
-use crate::model::impact::{Impact, Sphere};
+use crate::model::impact::Impact;
 use crate::model::material::{BulkInput, Material, ShearProny};
 
 use super::data::Data;
@@ -283,8 +283,15 @@ impl Model {
         v
     }
 
-    /// The impact of `sphere` at `v0` (m/s) on the material with parameter `values`.
-    pub fn impact(&self, sphere: Sphere, v0: f64, values: &[f64]) -> Result<Impact> {
+    /// The impact of `sphere` (a [`crate::model::impact::Sphere`]: Hertz's paraboloid, or an impactor of any
+    /// shape) at `v0` (m/s) on the material with parameter `values`.
+    pub fn impact(
+        &self,
+        sphere: impl Into<super::data::Impactor>,
+        v0: f64,
+        values: &[f64],
+    ) -> Result<Impact> {
+        let super::data::Impactor { sphere, shape } = sphere.into();
         use Parameter::*;
         let nu = self.slot(Nu).map(|_| self.get(values, Nu));
         let g_inf = self.get(values, GInf);
@@ -296,7 +303,7 @@ impl Model {
                     (None, Some(nu)) => Material::with_poisson(g_inf, g_1, eta, nu)?,
                     (None, None) => unreachable!("a model without k_0 has nu"),
                 };
-                Impact::new(sphere, v0, m)
+                Impact::shaped(sphere, shape, v0, m)
             }
             ModelKind::Prony { n } => {
                 let terms: Vec<(f64, f64)> = (0..n)
@@ -308,7 +315,7 @@ impl Model {
                     (None, Some(nu)) => BulkInput::Poisson(nu),
                     (None, None) => unreachable!("a model without k_0 has nu"),
                 };
-                Impact::new(sphere, v0, Material::general(shear, bulk)?)
+                Impact::shaped(sphere, shape, v0, Material::general(shear, bulk)?)
             }
         }
     }

@@ -120,7 +120,7 @@ pub fn exact_data(cfg: &StudyConfig) -> Result<Data> {
     Ok(Data {
         setups: vec![Setup {
             name: "study".into(),
-            sphere,
+            sphere: sphere.into(),
         }],
         observations,
     })
