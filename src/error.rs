@@ -184,6 +184,17 @@ pub enum Error {
         /// The limit.
         max: usize,
     },
+    /// Inputs whose magnitudes, scaled to the contact (canonical units), leave the range of
+    /// double precision: what overflowed or vanished, and the inputs that made it so.
+    #[error("{what} = {value:e} once scaled to the contact: {inputs}; check their units")]
+    OutOfScale {
+        /// The scaled quantity (e.g. `"a relaxation time of G_eq over the contact time"`).
+        what: &'static str,
+        /// Its value.
+        value: f64,
+        /// The inputs with their values, in words.
+        inputs: String,
+    },
     /// A request that the chosen solver does not support.
     #[error("{0}")]
     Unsupported(String),
@@ -327,6 +338,7 @@ impl Error {
             | Error::OutputPath { .. }
             | Error::TooManyPronyTerms { .. }
             | Error::Parse { .. }
+            | Error::OutOfScale { .. }
             | Error::InvalidBodies { .. } => ErrorKind::Input,
             Error::UnstableStep { .. }
             | Error::WorkLimit { .. }

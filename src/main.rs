@@ -9,6 +9,14 @@ use clap::Parser;
 use mdr_impact::error::escape_text;
 
 fn main() -> ExitCode {
+    // Rust ignores SIGPIPE, so a closed pipe (`mdr-impact cor --input big.csv | head`) made every
+    // `println!` panic; the default action ends the process quietly, as `cat` does.
+    #[cfg(unix)]
+    // SAFETY: setting a signal's disposition to SIG_DFL at the start of main, before any thread
+    // exists, has no preconditions.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     let parsed = match cli::args::Cli::try_parse() {
         Ok(p) => p,
         // --help and --version print as usual and exit 0

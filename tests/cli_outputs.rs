@@ -267,3 +267,36 @@ fn a_failed_run_leaves_none_of_its_files() {
         assert_eq!(listing(d), ["blocker", "s.toml"]);
     }
 }
+
+#[test]
+fn a_closed_pipe_ends_the_output_quietly() {
+    // `mdr-impact cor --input big.csv | head -1`: the reader leaves after one line; no panic
+    // message ("failed printing to stdout") and no error line, whatever the exit status
+    use std::io::{BufRead, BufReader, Write};
+    use std::process::{Command, Stdio};
+    let dir = std::env::temp_dir().join(format!("mdr-pipe-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let input = dir.join("groups.csv");
+    let mut f = std::fs::File::create(&input).unwrap();
+    writeln!(f, "nu,p2,p3").unwrap();
+    for i in 0..4000 {
+        writeln!(f, "0.3,{},{}", 0.01 + 1e-5 * i as f64, 0.5).unwrap();
+    }
+    drop(f);
+    let mut child = Command::new(env!("CARGO_BIN_EXE_mdr-impact"))
+        .args(["cor", "--input", input.to_str().unwrap()])
+        .env("CI", "1")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = String::new();
+    BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut first)
+        .unwrap();
+    assert!(first.starts_with("nu,p2,p3,cor"), "{first}");
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!err.contains("panicked") && !err.contains("error"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}

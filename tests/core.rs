@@ -223,7 +223,7 @@ fn error_variants() {
     let huge = Sphere::new(1e300, 1e-300).unwrap();
     assert!(matches!(
         Impact::new(huge, 1e300, mat),
-        Err(NonFinite { .. })
+        Err(OutOfScale { .. })
     ));
     // rtol range
     let imp = case_impact("dissipative-nu045");

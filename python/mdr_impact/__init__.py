@@ -151,7 +151,9 @@ def cor(nu, p2, p3, rtol=DEFAULT_RTOL, solver="auto", full_output=False):
             raise
         raise Error(f"nu, p2, p3: shapes cannot be broadcast together ({e})") from None
     shape = arrays[0].shape
-    flat = [np.ascontiguousarray(a, dtype=np.float64).reshape(-1) for a in arrays]
+    # contiguous and aligned copies where needed (arrays that arrive pickled, e.g. a dask
+    # chunk on a worker, can be misaligned views of a byte buffer)
+    flat = [np.require(a, dtype=np.float64, requirements=["C", "A"]).reshape(-1) for a in arrays]
     c, t, d = _core.cor_groups(flat[0], flat[1], flat[2], list(shape), float(rtol), str(solver))
     out = tuple(float(x) if shape == () else x for x in (c, t, d))
     return out if full_output else out[0]

@@ -159,3 +159,13 @@ def test_keyboard_interrupt_ends_a_long_call():
             mi.cor(0.45, 0.01, p3, rtol=1e-8)
     finally:
         timer.cancel()
+
+
+def test_cor_accepts_misaligned_and_read_only_arrays():
+    # what a pickled chunk (dask on a worker) can look like: a read-only view of a byte buffer
+    # at an odd offset
+    values = np.array([0.1, 1.0, 10.0])
+    raw = b"\0" + values.tobytes()
+    p2 = np.frombuffer(raw, dtype=np.float64, offset=1)
+    assert not p2.flags.aligned and not p2.flags.writeable
+    assert np.array_equal(mi.cor(0.3, p2, 1.0), mi.cor(0.3, values, 1.0))

@@ -12,7 +12,7 @@ use mdr_impact::report::{bench, figures, sections, stress, validate};
 use mdr_impact::{solve, Error, Groups, Impact, Material, SolveOptions};
 
 use super::args::*;
-use super::{progress_bar, with_progress, Failure, Outcome};
+use super::{progress_bar, with_progress, with_spinner, Failure, Outcome};
 
 /// Run one parsed command (none: `run` on the default scene).
 pub fn run(command: Option<Command>) -> Outcome {
@@ -59,7 +59,8 @@ fn cmd_run(RunArgs { scene, json, out }: RunArgs) -> Outcome {
         None => RunFiles::of_scene(&scene),
     };
     scene.options.history = files.any();
-    let outcome = solve(&scene.impact, &scene.options)?;
+    let what = format!("solving ({})", scene.options.solver.name());
+    let outcome = with_spinner(&what, || solve(&scene.impact, &scene.options))?;
     // rendered first and written together: a failure leaves none of them
     output::write_outputs(&files.render(&name, &scene.impact, &outcome)?)?;
     if json {

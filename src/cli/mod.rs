@@ -89,6 +89,24 @@ pub fn with_progress<T>(len: u64, what: &str, work: impl FnOnce(&(dyn Fn() + Syn
     out
 }
 
+/// Run `work` (one solve, which has no unit count) under a spinner with the elapsed time, named
+/// `what`, drawn only where [`show_progress`] says so: a long `mdr` solve
+/// shows that it is alive.
+pub fn with_spinner<T>(what: &str, work: impl FnOnce() -> T) -> T {
+    if !show_progress() {
+        return work();
+    }
+    let spinner = indicatif::ProgressBar::new_spinner();
+    if let Ok(style) = indicatif::ProgressStyle::with_template("{spinner} {msg} {elapsed}") {
+        spinner.set_style(style);
+    }
+    spinner.set_message(what.to_string());
+    spinner.enable_steady_tick(std::time::Duration::from_millis(250));
+    let out = work();
+    spinner.finish_and_clear();
+    out
+}
+
 /// A clap error as one line (README: errors are one line on stderr): its lines joined, without
 /// the "For more information" trailer.
 pub fn one_line(e: &clap::Error) -> String {

@@ -216,41 +216,69 @@ impl Impact {
         Ok(imp)
     }
 
-    /// Refuse magnitudes whose canonical form leaves the f64 range (module docs).
+    /// Refuse magnitudes whose canonical form leaves the f64 range (module docs), naming the
+    /// inputs that made them ([`Error::OutOfScale`]).
     fn check_scales(&self) -> Result<()> {
         let imp = self;
-        // Extreme magnitudes can leave the f64 range when scaled; refuse them here, loudly.
+        let inputs = || {
+            format!(
+                "mass {:e} kg, {}, velocity {:e} m/s, relaxed shear modulus {:e} Pa",
+                imp.sphere.mass,
+                imp.shape.describe(),
+                imp.velocity,
+                imp.target.g_inf()
+            )
+        };
+        let out = |what, value| Error::OutOfScale {
+            what,
+            value,
+            inputs: inputs(),
+        };
         let s = imp.scales();
         for (what, v) in [
-            ("length scale", s.length),
-            ("time scale", s.time),
-            ("force scale", s.force),
+            ("the indentation scale (m)", s.length),
+            ("the contact time scale (s)", s.time),
+            ("the force scale (N)", s.force),
         ] {
             if !(v.is_finite() && v > 0.0) {
-                return Err(crate::Error::NonFinite { what, value: v });
+                return Err(out(what, v));
             }
         }
         if let Some(g) = imp.groups()
             && !g.p3.is_finite()
         {
-            return Err(crate::Error::NonFinite {
-                what: "p3",
-                value: g.p3,
-            });
+            return Err(out("the group p3", g.p3));
         }
         // the series the solvers get: every modulus and time finite and positive in canonical
         // units (extreme times or moduli can underflow or overflow when scaled)
         let c = imp.canonical_relaxation();
-        for (what, v) in std::iter::once(("canonical G_eq(inf)", c.relaxed)).chain(
-            c.terms.iter().flat_map(|t| {
-                [
-                    ("canonical G_eq time", t.tau),
-                    ("canonical G_eq term", t.coefficient),
-                ]
-            }),
-        ) {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(Error::NonFinite { what, value: v });
+        if !(c.relaxed.is_finite() && c.relaxed > 0.0) {
+            return Err(out("G_eq(inf) over the relaxed modulus", c.relaxed));
+        }
+        for t in &c.terms {
+            if !(t.tau.is_finite() && t.tau > 0.0) {
+                return Err(Error::OutOfScale {
+                    what: "a relaxation time of G_eq over the contact time scale",
+                    value: t.tau,
+                    inputs: format!(
+                        "{} (the material's relaxation times: shortest {:e} s, longest {:e} s; \
+                         contact time scale {:e} s)",
+                        inputs(),
+                        imp.equivalent.min_tau(),
+                        imp.equivalent
+                            .terms
+                            .iter()
+                            .map(|t| t.tau)
+                            .fold(0.0, f64::max),
+                        s.time
+                    ),
+                });
+            }
+            if !(t.coefficient.is_finite() && t.coefficient > 0.0) {
+                return Err(out(
+                    "a modulus of G_eq over the relaxed modulus",
+                    t.coefficient,
+                ));
             }
         }
         Ok(())

@@ -163,6 +163,7 @@ pub fn error_kind(e: &Error) -> &'static str {
         Error::NoConvergence { .. } => "NoConvergence",
         Error::Quadrature { .. } => "Quadrature",
         Error::NonFinite { .. } => "NonFinite",
+        Error::OutOfScale { .. } => "OutOfScale",
         Error::Scene(_) => "Scene",
         Error::Csv { .. } => "Csv",
         Error::NoSolver { .. } => "NoSolver",
