@@ -4,7 +4,7 @@
 //! [`SolverKind::ALL`] and one arm of `solvers::solver_for`.
 
 use crate::error::{Error, Result};
-use crate::model::contact::{CanonicalOutcome, Contact, Geometry};
+use crate::model::contact::{CanonicalOutcome, Contact};
 use crate::model::tolerances;
 
 /// A solver of the contact problem.
@@ -172,19 +172,5 @@ impl SolveOptions {
             }
         }
         Ok(())
-    }
-}
-
-/// Refuse a contact geometry other than the canonical paraboloid (`R = 1`), the one the
-/// closed-form kernels of `fast` and `reference` (Lee–Radok/Ting for the sphere) are written for.
-pub(crate) fn require_unit_paraboloid(contact: &Contact, solver: SolverKind) -> Result<()> {
-    match contact.geometry {
-        Geometry::Paraboloid { radius: 1.0 } => Ok(()),
-        _ => Err(Error::NotSupported {
-            solver: solver.name(),
-            what: "indenters other than the paraboloid (Hertz): it is written for d^(3/2); \
-                   reference and mdr solve every shape"
-                .into(),
-        }),
     }
 }

@@ -124,6 +124,8 @@ pub struct BenchReport {
     pub batch: Option<(usize, f64)>,
     /// Wall time (s) of `curve --v0 0.01:10:200 --log` on the default scene.
     pub curve_seconds: f64,
+    /// `fast` on the indenter shapes against the paraboloid ([`shape_timing`]).
+    pub shapes: Vec<ShapeTiming>,
     /// The machine it ran on ([`machine`]).
     pub machine: String,
 }
@@ -176,6 +178,7 @@ pub fn run_full(opts: &BenchOptions, tick: &dyn Fn()) -> Result<BenchReport> {
     let t0 = Instant::now();
     curve::run(&scene.impact, &scene.options, &range, &|| {})?;
     let curve_seconds = t0.elapsed().as_secs_f64();
+    let shapes = shape_timing(opts.budget)?;
     Ok(BenchReport {
         options: *opts,
         points,
@@ -185,6 +188,7 @@ pub fn run_full(opts: &BenchOptions, tick: &dyn Fn()) -> Result<BenchReport> {
         fit,
         batch,
         curve_seconds,
+        shapes,
         machine: machine(),
     })
 }
@@ -245,6 +249,7 @@ impl BenchReport {
             "curve --v0 {CURVE_VELOCITIES} --log (default scene): {:.3} s",
             self.curve_seconds
         );
+        s.push_str(&shape_timing_table(&self.shapes));
         if !self.timed.is_empty() {
             s.push_str(&targets(
                 &self.timed,
@@ -273,6 +278,8 @@ impl BenchReport {
         }
         s.push('\n');
         s.push_str(&self.curve_line());
+        s.push('\n');
+        s.push_str(&shape_timing_table(&self.shapes));
         s
     }
 }

@@ -594,3 +594,76 @@ pub fn fit_timing_text(t: &FitTiming) -> String {
         t.drops, t.seconds, t.solves
     )
 }
+
+/// The time of `fast` per impact for one indenter shape, and its ratio to the paraboloid's.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShapeTiming {
+    /// The shape, as `report::validate::shapes` names it.
+    pub shape: &'static str,
+    /// Median time per impact (s), summed over the velocities.
+    pub seconds: f64,
+    /// `seconds` over the paraboloid's.
+    pub ratio: f64,
+}
+
+/// Velocities (m/s) of [`shape_timing`].
+pub const SHAPE_VELOCITIES: [f64; 4] = [0.3, 0.7, 1.5, 3.0];
+
+/// `fast` at rtol 1e-6 on every indenter shape that it solves (docs/theory.md §11) and on the
+/// paraboloid of the same radius, one thread, the default scene's material and 4.11 g at
+/// [`SHAPE_VELOCITIES`]: the median time per impact of each (over repeats within `budget`), and
+/// the ratio to the paraboloid (the target of the profile issue: at most 1.5).
+pub fn shape_timing(budget: f64) -> Result<Vec<ShapeTiming>> {
+    use crate::model::geometry::Shape;
+    use crate::report::validate::shapes::{shaped_impact, shapes};
+    let material = crate::io::scene::Scene::default_scene()
+        .impact
+        .half_space()
+        .cloned()
+        .ok_or(Error::Internal("the default scene is a half-space"))?;
+    let opts = SolveOptions::with(SolverKind::Fast, 1e-6);
+    let mut list: Vec<(&'static str, Shape)> =
+        vec![("paraboloid", Shape::Paraboloid { radius: 5.0e-3 })];
+    list.extend(shapes().into_iter().filter(|(_, s)| !s.is_flat()));
+    let mut out: Vec<ShapeTiming> = Vec::new();
+    for (name, shape) in list {
+        let impacts = SHAPE_VELOCITIES
+            .iter()
+            .map(|&v| shaped_impact(shape, v, material.clone()))
+            .collect::<Result<Vec<_>>>()?;
+        let (t, _) = median_time(budget, || {
+            for imp in &impacts {
+                solve(imp, &opts)?;
+            }
+            Ok(())
+        })?;
+        let seconds = t / impacts.len() as f64;
+        let ratio = seconds / out.first().map_or(seconds, |p| p.seconds);
+        out.push(ShapeTiming {
+            shape: name,
+            seconds,
+            ratio,
+        });
+    }
+    Ok(out)
+}
+
+/// The table of [`shape_timing`].
+pub fn shape_timing_table(rows: &[ShapeTiming]) -> String {
+    let mut s = format!(
+        "Indenter shapes (`fast` at rtol 1e-6, one thread, the default scene's material, 4.11 g \
+         at {SHAPE_VELOCITIES:?} m/s; the flat punch and elastic materials on other shapes go \
+         to `reference`): median time per impact and its ratio to the paraboloid's (target: \
+         at most 1.5).\n\n| shape | time per impact | ratio to the paraboloid |\n| --- | --- | --- |\n"
+    );
+    for r in rows {
+        let _ = writeln!(
+            s,
+            "| {} | {} | {:.2} |",
+            r.shape,
+            fmt_time(r.seconds),
+            r.ratio
+        );
+    }
+    s
+}

@@ -155,8 +155,9 @@ and `reference`), swapping A and B changes the CoR by at most 1.3e-14. Re-run: `
 one case: `mdr-impact run scenes/two_spheres.toml`.\n\n";
 
 const SHAPES_TEXT: &str = "Every indenter shape of docs/theory.md §11 (`[indenter]` and \
-`[sphere] profile`), elastic and viscoelastic, by `reference` (rtol 1e-10), `auto` (rtol 1e-8; it \
-hands shapes other than the paraboloid to `reference`) and `mdr` (rtol 1e-4). Each cell is the \
+`[sphere] profile`), elastic and viscoelastic, by `reference` (rtol 1e-10), `auto` (rtol 1e-8: \
+`fast`, except for the flat punch and the elastic half-space, which it hands to `reference`) and \
+`mdr` (rtol 1e-4). Each cell is the \
 largest relative difference of the CoR, contact time, maximum indentation and maximum force \
 against the truth: on the elastic half-space (G = 1 MPa, incompressible, 4.11 g at 0.8 m/s) the \
 closed forms written in `report::validate::shapes` independently of the solvers' geometry \

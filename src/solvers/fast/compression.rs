@@ -7,8 +7,9 @@
 use super::*;
 
 /// [`remainder_correction`] of a compression step after the correction `delta` to `z`: the
-/// second-order remainder of the forces `(16/3) (c_inf I + M) W'' delta^2 / 2` with
-/// `W'' = (3/4) D^(-1/2)` at the nodes `D = dfix + z`.
+/// second-order remainder of the forces `(16/3) (c_inf I + M) W'' delta^2 / 2` with `W''` at
+/// the nodes `D = dfix + z` given by `w2 = W''(D)` (`(3/4) D^(-1/2)` for the paraboloid,
+/// `(3/2) a'(D)` for any shape).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn compression_remainder(
     a_inv: &Mat<S>,
@@ -16,12 +17,14 @@ pub(super) fn compression_remainder(
     h2: f64,
     m: &Mat<S>,
     c_inf: f64,
-    dfix: &[f64; S],
-    z: &[f64; S],
+    nodes: (&[f64; S], &[f64; S]),
+    curvature: Option<&[f64; S]>,
     delta: &[f64; S],
 ) -> f64 {
-    let w2: [f64; S] = std::array::from_fn(|j| {
-        0.375 * delta[j] * delta[j] / (dfix[j] + z[j]).max(f64::MIN_POSITIVE).sqrt()
+    let (dfix, z) = nodes;
+    let w2: [f64; S] = std::array::from_fn(|j| match curvature {
+        None => 0.375 * delta[j] * delta[j] / (dfix[j] + z[j]).max(f64::MIN_POSITIVE).sqrt(),
+        Some(w2) => 0.5 * w2[j] * delta[j] * delta[j],
     });
     let rem_f = std::array::from_fn(|i| {
         let mut acc = c_inf * w2[i];
@@ -69,7 +72,10 @@ pub(super) fn compress<const K: usize>(
     let mut steps = 0u64;
     let mut err_sum = 0.0;
     // glassy Hertz time of maximum indentation as the first length scale
-    let d0 = (1.25 / (K16 * s.glassy)).powf(0.4);
+    let d0 = match &s.geom {
+        None => (1.25 / (K16 * s.glassy)).powf(0.4),
+        Some(g) => g.elastic_max_indentation(s.glassy),
+    };
     let tm0 = 0.5 * HERTZ_CONTACT_FACTOR * d0;
     let mut h = 0.1 * tm0 * (prec / 1e-6).powf(1.0 / (S as f64 + 2.0)).min(1.0);
 
@@ -133,7 +139,7 @@ pub(super) fn compress<const K: usize>(
             sk = end.s;
             f_n = out.f[S - 1];
             if let Some(hh) = hist.as_mut() {
-                hh.push(t, d, v, f_n, d.max(0.0).sqrt());
+                hh.push(t, d, v, f_n, s.radius_at(d));
             }
             kind = Kind::Regular;
             h_full = h;
@@ -184,7 +190,7 @@ pub(super) fn compress<const K: usize>(
         f_m = s.force_comp(&pt);
         peak.push(t_m, f_m);
         if let Some(hh) = hist.as_mut() {
-            hh.push(t_m, d_m, v_m, f_m, d_m.max(0.0).sqrt());
+            hh.push(t_m, d_m, v_m, f_m, s.radius_at(d_m));
         }
         // restitution starts with the length of the last full compression step, shortened
         // for the relaxation layers after the turn
@@ -231,7 +237,7 @@ impl<const K: usize> Solver<K> {
     /// `w` and `d^(3/2)` times `geff` ([`Solver::effective_modulus`]).
     pub(super) fn comp_defect(&self, seg: &Seg<K>, th: f64, geff: f64) -> f64 {
         let pt = self.eval_seg(seg, th, true);
-        (pt.dd + self.force_comp(&pt)).abs() + K16 * geff * (pow15(pt.d) - pt.w).abs()
+        (pt.dd + self.force_comp(&pt)).abs() + K16 * geff * (self.w(pt.d) - pt.w).abs()
     }
 
     pub(super) fn force_comp(&self, pt: &Pt<K>) -> f64 {
@@ -260,8 +266,8 @@ impl<const K: usize> Solver<K> {
         let c = self.tab.c;
         let vh = vn * h;
         let wfix = match kind {
-            Kind::Regular => pow15(dn),
-            Kind::First => pow15(vh),
+            Kind::Regular => self.w(dn),
+            Kind::First => self.w(vh),
         };
         let mut dfix = [0.0; S];
         let mut wfix_n = [0.0; S];
@@ -322,14 +328,15 @@ impl<const K: usize> Solver<K> {
         }
         // unknowns: the increments z_i = d(t_n + c_i h) - dfix_i (no cancellation for small h)
         let regular = kind == Kind::Regular;
+        let shape = ShapeFns { geom: self.geom };
         let forces = |z: &[f64; S]| {
             let mut dw = [0.0; S]; // W_i - wfix_i
             let mut w = [0.0; S];
             for i in 0..S {
                 let di = (dfix[i] + z[i]).max(0.0);
-                w[i] = pow15(di);
+                w[i] = shape.w(di);
                 dw[i] = if regular {
-                    pow15_increment(dn, vh * c[i] + z[i])
+                    shape.w_increment(dn, vh * c[i] + z[i])
                 } else {
                     w[i] - wfix_n[i]
                 };
@@ -360,8 +367,8 @@ impl<const K: usize> Solver<K> {
             for i in 0..S {
                 r[i] = -(z[i] + h2 * af[i]);
             }
-            // dW_j/dD_j = (3/2) sqrt(D_j)
-            let dw: [f64; S] = std::array::from_fn(|j| 1.5 * (dfix[j] + z[j]).max(0.0).sqrt());
+            // dW_j/dD_j = (3/2) a(D_j) (sqrt(D_j) for the paraboloid)
+            let dw: [f64; S] = std::array::from_fn(|j| self.w_slope(dfix[j] + z[j]));
             let mut jf = [[0.0; S]; S];
             for i in 0..S {
                 for j in 0..S {
@@ -385,11 +392,28 @@ impl<const K: usize> Solver<K> {
             for i in 0..S {
                 dmin = dmin.min(dfix[i] + z[i]);
             }
-            let curv = 0.5 * h2 * 0.75 * K16 * g_step / dmin.max(0.0).sqrt();
+            let curv = match self.geom {
+                None => 0.5 * h2 * 0.75 * K16 * g_step / dmin.max(0.0).sqrt(),
+                Some(_) => 0.5 * h2 * 1.5 * self.radius_slope(dmin) * K16 * g_step,
+            };
             if newton_done(dmax, scale, prev, self.rtol)
                 || quadratic_done(dmax, scale, curv, self.rtol)
                 || next_correction_done(
-                    compression_remainder(&b.a_inv, &jf, h2, &m, self.c_inf, &dfix, &z, &delta),
+                    compression_remainder(
+                        &b.a_inv,
+                        &jf,
+                        h2,
+                        &m,
+                        self.c_inf,
+                        (&dfix, &z),
+                        self.geom
+                            .is_some()
+                            .then(|| {
+                                std::array::from_fn(|j| 1.5 * self.radius_slope(dfix[j] + z[j]))
+                            })
+                            .as_ref(),
+                        &delta,
+                    ),
                     scale,
                     self.rtol,
                 )
@@ -448,7 +472,7 @@ impl<const K: usize> Solver<K> {
         }
         let mut a = [0.0; S];
         for i in 0..S {
-            a[i] = (dfix[i] + z[i]).max(0.0).sqrt();
+            a[i] = self.radius_at(dfix[i] + z[i]);
         }
         // step end from the last node (θ = 1: every power of θ is 1)
         let mut end = Pt {

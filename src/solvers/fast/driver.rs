@@ -12,6 +12,10 @@ pub(super) struct PeakTracker {
     pub(super) prev: [(f64, f64); 2],
     pub(super) n: usize,
     pub(super) max: f64,
+    /// Time of the largest node force.
+    pub(super) t_max: f64,
+    /// The largest node force.
+    pub(super) f_max: f64,
 }
 
 impl PeakTracker {
@@ -30,6 +34,9 @@ impl PeakTracker {
             }
         }
         self.max = self.max.max(f);
+        if f > self.f_max {
+            (self.t_max, self.f_max) = (t, f);
+        }
         self.prev = [self.prev[1], (t, f)];
         self.n += 1;
     }
@@ -94,6 +101,10 @@ pub(super) fn verified<const K: usize>(
                 if let Some(p) = prev {
                     estimate = ((out.cor - p) / out.cor).abs();
                     if estimate <= rtol {
+                        // the maximum force of the returned solve from its dense output
+                        if let Some((t_max, f_max)) = s.peak_node {
+                            out.max_force = s.refine_peak(t_max).max(f_max);
+                        }
                         out.cor_error_estimate = Some(estimate);
                         out.work.steps = steps;
                         out.work.evaluations = s.evaluations;

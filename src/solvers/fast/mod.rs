@@ -159,11 +159,11 @@ mod ting;
 use std::sync::OnceLock;
 
 use crate::error::{Error, Result};
-use crate::model::contact::{CanonicalOutcome, Contact};
+use crate::model::contact::{CanonicalOutcome, Contact, Geometry};
 use crate::model::impact::{History, Method, Outcome, Work};
 use crate::model::material::Prony;
 use crate::model::tolerances;
-use crate::solvers::api::{require_unit_paraboloid, ImpactSolver, SolveOptions, SolverKind};
+use crate::solvers::api::{ImpactSolver, SolveOptions, SolverKind};
 use basis::*;
 use compression::*;
 use control::*;
@@ -268,6 +268,9 @@ const K16: f64 = 16.0 / 3.0;
 
 struct Solver<const K: usize> {
     rtol: f64,
+    /// The indenter (canonical, [`crate::model::geometry`]); `None` for the unit paraboloid,
+    /// whose `w = d^(3/2)` has the closed forms of `dense` (bit for bit the solver it was).
+    geom: Option<Geometry>,
     /// Smallest energy scale of the step tolerance ([`FAST_MIN_TOL_SCALE`], lowered for a
     /// CoR below it: see [`impact`]).
     min_tol_scale: f64,
@@ -293,6 +296,89 @@ struct Solver<const K: usize> {
     evaluations: u64,
     /// Compression segment of the last dense evaluation.
     last_seg: usize,
+    /// Time and value of the largest node force of the last solve, when it lies in compression.
+    peak_node: Option<(f64, f64)>,
+}
+
+/// The indenter's functions as the steps use them (a copy, free of the solver's borrows).
+#[derive(Debug, Clone, Copy)]
+struct ShapeFns {
+    /// `None`: the unit paraboloid.
+    geom: Option<Geometry>,
+}
+
+impl ShapeFns {
+    /// The force function `w(d)` (`d^(3/2)` for the paraboloid; 0 for `d <= 0`).
+    #[inline]
+    fn w(&self, d: f64) -> f64 {
+        match &self.geom {
+            None => pow15(d),
+            Some(g) => g.force_function(d.max(0.0)),
+        }
+    }
+    /// `w(d + delta) - w(d)`, without cancellation for small `delta` (the paraboloid's closed
+    /// form; otherwise `delta` times the mean of `w' = (3/2) a` by 4-point Gauss–Legendre,
+    /// exact to `O(delta^8)` where `a` is smooth, the difference where the interval crosses 0).
+    #[inline]
+    fn w_increment(&self, d: f64, delta: f64) -> f64 {
+        match &self.geom {
+            None => pow15_increment(d, delta),
+            Some(g) => {
+                let (a, b) = (d, d + delta);
+                if a <= 0.0 || b <= 0.0 {
+                    return g.force_function(b.max(0.0)) - g.force_function(a.max(0.0));
+                }
+                const X: [f64; 4] = [
+                    0.069_431_844_202_973_71,
+                    0.330_009_478_207_571_9,
+                    0.669_990_521_792_428_1,
+                    0.930_568_155_797_026_3,
+                ];
+                const W: [f64; 4] = [
+                    0.173_927_422_568_726_93,
+                    0.326_072_577_431_273_07,
+                    0.326_072_577_431_273_07,
+                    0.173_927_422_568_726_93,
+                ];
+                let mean: f64 = X
+                    .iter()
+                    .zip(W)
+                    .map(|(x, w)| w * g.contact_radius(a + x * delta))
+                    .sum();
+                1.5 * delta * mean
+            }
+        }
+    }
+    /// `w'(d) = (3/2) a(d)`.
+    #[inline]
+    fn w_slope(&self, d: f64) -> f64 {
+        match &self.geom {
+            None => 1.5 * d.max(0.0).sqrt(),
+            Some(g) => g.force_slope(d.max(0.0)),
+        }
+    }
+    /// The contact radius `a(d)`.
+    #[inline]
+    fn radius_at(&self, d: f64) -> f64 {
+        match &self.geom {
+            None => d.max(0.0).sqrt(),
+            Some(g) => g.contact_radius(d.max(0.0)),
+        }
+    }
+    /// `a'(d)` (bounds of the Newton remainders; `1 / (2 sqrt(d))` for the paraboloid), at
+    /// `d` at least the smallest positive number.
+    #[inline]
+    fn radius_slope(&self, d: f64) -> f64 {
+        let d = d.max(f64::MIN_POSITIVE);
+        match &self.geom {
+            None => 0.5 / d.sqrt(),
+            Some(g) => {
+                let h = 1e-6 * d;
+                (g.contact_radius(d + h) - g.contact_radius((d - h).max(0.0)))
+                    / (d + h - (d - h).max(0.0))
+            }
+        }
+    }
 }
 
 /// One converged compression or restitution step.
@@ -307,6 +393,27 @@ struct StepOut<const K: usize> {
 }
 
 impl<const K: usize> Solver<K> {
+    /// The force function `w(d)` ([`ShapeFns::w`]).
+    #[inline]
+    fn w(&self, d: f64) -> f64 {
+        ShapeFns { geom: self.geom }.w(d)
+    }
+    /// `w'(d) = (3/2) a(d)`.
+    #[inline]
+    fn w_slope(&self, d: f64) -> f64 {
+        ShapeFns { geom: self.geom }.w_slope(d)
+    }
+    /// The contact radius `a(d)`.
+    #[inline]
+    fn radius_at(&self, d: f64) -> f64 {
+        ShapeFns { geom: self.geom }.radius_at(d)
+    }
+    /// `a'(d)` ([`ShapeFns::radius_slope`]).
+    #[inline]
+    fn radius_slope(&self, d: f64) -> f64 {
+        ShapeFns { geom: self.geom }.radius_slope(d)
+    }
+
     /// Relative truncation of the kernel series ([`FAST_SERIES_LEVEL`] of `rtol`).
     fn series_tol(&self) -> f64 {
         (FAST_SERIES_LEVEL * self.rtol).max(1e-17)
@@ -353,20 +460,55 @@ impl<const K: usize> Solver<K> {
 /// [`Error::NoConvergence`] / [`Error::WorkLimit`] when every solve stopped on a bounded
 /// iteration.
 pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
+    impact_on(None, prony, rtol, history)
+}
+
+/// [`impact`] for the indenter `geometry` (canonical, [`crate::model::geometry`]; `None` or the
+/// unit sphere: the paraboloid): the shape's `w(d)` and `a(d)` in place of `d^(3/2)` and
+/// `sqrt(d)` (docs/theory.md §11). The first step's basis is the paraboloid's (powers of
+/// `sqrt(t)` after `t^(3/2)`): for another shape its step control shrinks the first step until
+/// the mismatch, of the size of `w` over the step, is within the tolerance. Refused
+/// ([`Error::NotSupported`]) for the flat punch, which has no Ting phase, and for an elastic
+/// material on a shape other than the paraboloid (no terms to integrate: `reference` solves it).
+pub fn impact_on(
+    geometry: Option<Geometry>,
+    prony: &Prony,
+    rtol: f64,
+    history: bool,
+) -> Result<Outcome> {
+    let geom = geometry.filter(|g| *g != Geometry::UNIT_SPHERE);
+    if geom.is_some_and(|g| g.is_flat()) {
+        return Err(Error::NotSupported {
+            solver: SOLVER_NAME,
+            what: "the flat punch (its contact radius never shrinks: no Ting phase); \
+                   reference and mdr solve it"
+                .into(),
+        });
+    }
     let (c_inf, live) = prepare(prony, rtol)?;
+    if geom.is_some() && live.is_empty() {
+        return Err(Error::NotSupported {
+            solver: SOLVER_NAME,
+            what: "an elastic material on an indenter other than the paraboloid (no closed \
+                   form here); reference solves it"
+                .into(),
+        });
+    }
     // terms far outside the contact window are merged into their limit forms when the bound
     // of the merge stays within a share of rtol (module `reduce`)
     if live.len() > 2 {
-        return reduce::solve(c_inf, &live, rtol, |c, l, r| dispatch(c, l, r, history));
+        return reduce::solve(c_inf, &live, rtol, |c, l, r| {
+            dispatch(geom, c, l, r, history)
+        });
     }
-    dispatch(c_inf, &live, rtol, history)
+    dispatch(geom, c_inf, &live, rtol, history)
 }
 
 /// [`impact`] without merging the terms outside the contact window (module `reduce`): every
 /// term is integrated. For checks of the reduction and for benchmarks.
 pub fn impact_unreduced(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
     let (c_inf, live) = prepare(prony, rtol)?;
-    dispatch(c_inf, &live, rtol, history)
+    dispatch(None, c_inf, &live, rtol, history)
 }
 
 /// Validate `rtol` and `prony`; the relaxed modulus and the live terms `(c_k, tau_k)` (zero
@@ -434,21 +576,28 @@ fn prepare(prony: &Prony, rtol: f64) -> Result<(f64, Vec<(f64, f64)>)> {
 }
 
 /// [`impact`] on the validated, merged terms `live`.
-fn dispatch(c_inf: f64, live: &[(f64, f64)], rtol: f64, history: bool) -> Result<Outcome> {
+fn dispatch(
+    geom: Option<Geometry>,
+    c_inf: f64,
+    live: &[(f64, f64)],
+    rtol: f64,
+    history: bool,
+) -> Result<Outcome> {
     // the per-term state lives in arrays of the smallest capacity class that holds the live
     // terms (module docs, "Term state"): every loop runs over the live terms only
     match live.len() {
         0 => Ok(hertz(c_inf, history)),
-        1..=2 => solve_terms::<2>(c_inf, live, rtol, history),
-        3..=8 => solve_terms::<8>(c_inf, live, rtol, history),
-        9..=32 => solve_terms::<32>(c_inf, live, rtol, history),
-        _ => solve_terms::<FAST_MAX_TERMS>(c_inf, live, rtol, history),
+        1..=2 => solve_terms::<2>(geom, c_inf, live, rtol, history),
+        3..=8 => solve_terms::<8>(geom, c_inf, live, rtol, history),
+        9..=32 => solve_terms::<32>(geom, c_inf, live, rtol, history),
+        _ => solve_terms::<FAST_MAX_TERMS>(geom, c_inf, live, rtol, history),
     }
 }
 
 /// [`impact`] for `1 <= live.len() <= K` terms `(c_k, tau_k)` (positive, finite) and the
 /// relaxed modulus `c_inf`, with the per-term state in arrays of capacity `K`.
 fn solve_terms<const K: usize>(
+    geom: Option<Geometry>,
     c_inf: f64,
     live: &[(f64, f64)],
     rtol: f64,
@@ -464,6 +613,7 @@ fn solve_terms<const K: usize>(
     let glassy = c_inf + c[..k].iter().sum::<f64>();
     let mut s = Solver {
         rtol,
+        geom,
         min_tol_scale: FAST_MIN_TOL_SCALE,
         accept_step: 0.0,
         root_force_tol: 0.0,
@@ -481,6 +631,7 @@ fn solve_terms<const K: usize>(
         t_m: 0.0,
         evaluations: 0,
         last_seg: 0,
+        peak_node: None,
     };
     verified(&mut s, rtol, history)
 }
@@ -522,7 +673,12 @@ impl ImpactSolver for Fast {
         SolverKind::Fast
     }
     fn solve(&self, contact: &Contact, opts: &SolveOptions) -> Result<CanonicalOutcome> {
-        require_unit_paraboloid(contact, self.kind())?;
-        impact(&contact.g_eq, opts.rtol, opts.history).map(CanonicalOutcome::new)
+        impact_on(
+            Some(contact.geometry),
+            &contact.g_eq,
+            opts.rtol,
+            opts.history,
+        )
+        .map(CanonicalOutcome::new)
     }
 }

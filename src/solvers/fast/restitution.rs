@@ -268,14 +268,17 @@ pub(super) fn restitute<const K: usize>(
             value: cor,
         });
     }
+    // the verified driver refines the returned solve's maximum from here (Solver::refine_peak)
+    s.peak_node = (peak.t_max <= s.t_m).then_some((peak.t_max, peak.f_max));
+    let max_force = peak.max;
     Ok(Outcome {
         cor,
         rebound_velocity: cor,
         contact_time: t_end,
         max_indentation: d_m,
         time_of_max_indentation: t_m,
-        max_force: peak.max,
-        max_contact_radius: d_m.max(0.0).sqrt(),
+        max_force,
+        max_contact_radius: s.radius_at(d_m),
         dissipated_energy: 0.5 * (1.0 - cor * cor),
         cor_error_estimate: Some(err_sum / cor.abs().max(f64::MIN_POSITIVE)),
         history: hist,
@@ -400,7 +403,7 @@ impl<const K: usize> Solver<K> {
             let mut jf = [[0.0; S]; S];
             for i in 0..S {
                 if t1[i] > 0.0 {
-                    let g = 8.0 * d1[i].max(0.0).sqrt();
+                    let g = K16 * self.w_slope(d1[i]);
                     for j in 0..S {
                         jf[i][j] = g * (cn[i][j] + if i == j { self.c_inf } else { 0.0 });
                     }
@@ -440,7 +443,11 @@ impl<const K: usize> Solver<K> {
                     psi += cn[i][j] * delta[j];
                 }
                 t1[i] = r.t1 + psi / (r.v1 * r.g);
-                rem_f[i] = 2.0 * psi * psi / (r.d1.sqrt() * r.g);
+                rem_f[i] = match self.geom {
+                    None => 2.0 * psi * psi / (r.d1.sqrt() * r.g),
+                    // d²F/dψ² = 8 a'(d(t_1)) / G_eq (the paraboloid's 4 / (sqrt(d) G_eq))
+                    Some(_) => 4.0 * self.radius_slope(r.d1) * psi * psi / r.g,
+                };
             }
             let rem = rem_f.iter().fold(0.0, |acc: f64, &x| acc.max(x));
             converged = newton_done(dmax, scale, prev, self.rtol)
@@ -501,7 +508,7 @@ impl<const K: usize> Solver<K> {
         }
         let mut a = [0.0; S];
         for i in 0..S {
-            a[i] = d1[i].max(0.0).sqrt();
+            a[i] = self.radius_at(d1[i]);
         }
         // step end from the last node (θ = 1)
         let mut end = Pt {
@@ -528,5 +535,73 @@ impl<const K: usize> Solver<K> {
         let pt = self.eval_seg(seg, th, false);
         let f = self.t1_root(seg.t0 + th * seg.h, pt.d, &pt.s, guess)?.f;
         Ok((pt.dd + f).abs())
+    }
+}
+
+impl<const K: usize> Solver<K> {
+    /// The largest compression force near the node time `t0` (the largest node force): the
+    /// dense compression force (`q_k` from the exact kernels, `w` at the dense depth) maximised
+    /// over the neighbouring steps by successive parabolic interpolation in a bracket (a golden
+    /// section where the parabola leaves it), to a time within 1e-6 of the bracket (the force is
+    /// smooth there and its error quadratic in the time: below 1e-11 relative). About eight
+    /// dense evaluations; the parabola through three node forces that it replaces was off by up
+    /// to 7e-6 relative at rtol 1e-8.
+    pub(super) fn refine_peak(&mut self, t0: f64) -> f64 {
+        let n = self.comp.len();
+        let j = self.comp.partition_point(|g| g.t0 <= t0).max(1) - 1;
+        let lo = if j > 0 { self.comp[j - 1].t0 } else { 0.0 };
+        let hi = if j + 1 < n {
+            self.comp[j + 1].t0 + self.comp[j + 1].h
+        } else {
+            self.t_m
+        }
+        .min(self.t_m);
+        let mut force = |t: f64| {
+            let pt = self.comp_at(t);
+            self.force_comp(&pt)
+        };
+        let width = hi - lo;
+        let (mut a, mut b, mut m) = (lo, hi, t0.clamp(lo, hi));
+        let (mut fa, mut fb, mut fm) = (force(a), force(b), force(m));
+        if !(fm >= fa && fm >= fb) || !(m > a && m < b) {
+            // the largest value sits at an end of the window: no interior maximum to refine
+            return fa.max(fb).max(fm);
+        }
+        let golden = 0.5 * (3.0 - 5f64.sqrt());
+        for _ in 0..40 {
+            let (p, q) = ((m - a) * (fm - fb), (m - b) * (fm - fa));
+            let den = p - q;
+            let mut x = if den != 0.0 {
+                m - 0.5 * ((m - a) * p - (m - b) * q) / den
+            } else {
+                f64::NAN
+            };
+            if !(x > a && x < b) || (x - m).abs() < 1e-9 * width {
+                // a golden step into the larger side
+                x = if m - a > b - m {
+                    m - golden * (m - a)
+                } else {
+                    m + golden * (b - m)
+                };
+            }
+            let fx = force(x);
+            let step = (x - m).abs();
+            if fx > fm {
+                if x < m {
+                    (b, fb) = (m, fm);
+                } else {
+                    (a, fa) = (m, fm);
+                }
+                (m, fm) = (x, fx);
+            } else if x < m {
+                (a, fa) = (x, fx);
+            } else {
+                (b, fb) = (x, fx);
+            }
+            if step <= 1e-6 * width || b - a <= 1e-6 * width {
+                break;
+            }
+        }
+        fm
     }
 }
