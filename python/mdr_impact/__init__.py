@@ -24,6 +24,9 @@ Material, GeneralMaterial, Prony, Sphere (profile: paraboloid or exact sphere), 
 power law, flat punch, ...), Body, Scene, ImpactResult, Curve; ``Error`` (a
 ``ValueError``) for bad input and refused solves, with the message the command line prints.
 
+``__version__`` is the package's version (as ``importlib.metadata.version("mdr-impact")``),
+that of the ``mdr-impact`` crate and of ``mdr-impact --version``.
+
 Example
 -------
 >>> import mdr_impact as mi
@@ -53,6 +56,7 @@ from ._core import (
     Prony,
     Scene,
     Sphere,
+    __version__,
 )
 
 __all__ = [

@@ -15,6 +15,7 @@ MIN_RTOL: float
 MAX_RTOL: float
 SOLVERS: list[str]
 DEFAULT_SCENE: str
+__version__: str
 
 class Error(ValueError): ...
 

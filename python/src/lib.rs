@@ -1289,6 +1289,8 @@ fn prony_report(
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("Error", m.py().get_type::<Error>())?;
+    // the package version: python/Cargo.toml's, which maturin also writes into the metadata
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add("DEFAULT_RTOL", tolerances::DEFAULT_RTOL)?;
     m.add("MIN_RTOL", tolerances::MIN_RTOL)?;
     m.add("MAX_RTOL", tolerances::MAX_RTOL)?;

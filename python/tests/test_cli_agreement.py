@@ -146,3 +146,15 @@ def test_prony_equals_the_command(root, tmp_path, cli):
     assert report["shift"]["kind"] == "wlf"
     with pytest.raises(mi.Error, match="--terms"):
         mi.prony(data, terms="zero")
+
+
+def test_version_is_the_crates_and_the_packages(cli, root):
+    """`__version__`: the installed package's metadata, the crate's and `mdr-impact --version`."""
+    import importlib.metadata
+    import re
+
+    assert re.fullmatch(r"\d+\.\d+\.\d+\S*", mi.__version__)
+    assert mi.__version__ == importlib.metadata.version("mdr-impact")
+    crate = re.search(r'^version = "([^"]+)"', (root / "Cargo.toml").read_text(), re.M)
+    assert mi.__version__ == crate.group(1)
+    assert cli("--version").stdout.split() == ["mdr-impact", mi.__version__]
