@@ -363,7 +363,10 @@ impl Material {
     }
     /// This standard solid as a `GeneralMaterial` (one shear term).
     fn general(&self) -> GeneralMaterial {
-        let bulk = BulkInput::from(self.inner.bulk().clone());
+        let bulk = match self.inner.written_poisson() {
+            Some(nu) => BulkInput::Poisson(nu),
+            None => BulkInput::from(self.inner.bulk().clone()),
+        };
         GeneralMaterial {
             inner: RsMaterial::general(self.inner.shear().clone(), bulk)
                 .expect("a validated shear series and resolved bulk"),
