@@ -1235,27 +1235,38 @@ fn curve_values<'py>(
     Ok(d)
 }
 
-/// `mdr-impact dem` on `scene`: our `e(v0)` at the velocities `v0` (`MIN:MAX[:N]`, m/s, log
-/// spaced with `log`) and both DEM damping laws fitted with the Hertz stiffness of `modulus`
-/// (`relaxed` or `glassy`), GIL released. Returns the report as the command's JSON text and its
-/// LAMMPS and LIGGGHTS input lines.
+/// `mdr-impact dem` on `scene`: our `e(v0)` at the velocities `v0` and both DEM damping laws
+/// fitted with the Hertz stiffness of `modulus` (`relaxed` or `glassy`), GIL released. `v0` is
+/// the command's text `MIN:MAX[:N]` (errors name `--v0`) or the numbers `(MIN, MAX, N or None)`
+/// (m/s; errors name `v0`); log spaced with `log`. Returns the report as the command's JSON text
+/// and its LAMMPS and LIGGGHTS input lines.
 #[pyfunction]
 fn dem_report(
     py: Python<'_>,
     scene: PyRef<'_, Scene>,
-    v0: &str,
+    v0: DemVelocities,
     log: bool,
     modulus: &str,
 ) -> PyResult<(String, String, String)> {
-    let range = ok(curve::VelocityRange::parse_optional_n(
-        v0,
-        log,
-        dem::DEFAULT_VELOCITIES,
-    ))?;
+    let range = ok(match v0 {
+        DemVelocities::Text(text) => {
+            curve::VelocityRange::parse_optional_n(&text, log, dem::DEFAULT_VELOCITIES)
+        }
+        DemVelocities::Parts(min, max, n) => {
+            curve::VelocityRange::from_parts("v0", min, max, n, dem::DEFAULT_VELOCITIES, log)
+        }
+    })?;
     let modulus = ok(modulus.parse::<dem::ModulusChoice>())?;
     let s = &scene.inner;
     let report = ok(py.detach(|| dem::run(&s.impact, &s.options, &range, modulus, &|| {})))?;
     Ok((report.json(), report.lammps_text(), report.liggghts_text()))
+}
+
+/// The velocities of `dem_report`: the command line's text, or `(MIN, MAX, N or None)`.
+#[derive(FromPyObject)]
+enum DemVelocities {
+    Text(String),
+    Parts(f64, f64, Option<i64>),
 }
 
 /// `mdr-impact prony` on the DMA file `data` (the command's JSON report as text); with `out`,
