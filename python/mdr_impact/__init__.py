@@ -259,6 +259,7 @@ class Curve:
     """
 
     def __init__(self, values):
+        """From the binding's dict of arrays (SI) and limits; made by ``curve``."""
         self.v0 = values["v0"]
         self.cor = values["cor"]
         self.contact_time = values["contact_time"]
@@ -319,7 +320,8 @@ def curve(scene, v0):
 
 def catalogue():
     """The validation catalogue's impact cases: a list of dicts ``id``, ``regime``, ``nu``,
-    ``p2``, ``p3`` (the cases of ``VALIDATION.md``)."""
+    ``p2``, ``p3`` (the dimensionless groups of Eq. (11); the cases of ``VALIDATION.md``), to
+    pass to ``cor``."""
     return _core.catalogue_impacts()
 
 

@@ -169,6 +169,26 @@ def test_docstring_examples():
     assert tried > 0 and failures == 0
 
 
+def test_every_public_name_has_its_own_docstring():
+    """help() says what each public function, class, method and attribute is (with units)."""
+    import inspect
+    missing = []
+    for name in mi.__all__:
+        obj = getattr(mi, name)
+        if not callable(obj):
+            continue
+        if not (obj.__doc__ or "").strip():
+            missing.append(name)
+        if inspect.isclass(obj) and not issubclass(obj, Exception):
+            for k, v in vars(obj).items():
+                if k.startswith("_"):  # slots (__call__, ...) are in the class's docstring
+                    continue
+                doc = inspect.getdoc(getattr(obj, k)) or ""
+                if not doc.strip():
+                    missing.append(f"{name}.{k}")
+    assert missing == []
+
+
 def test_validity_and_warnings_as_run_json():
     """An answer says when the model does not apply, as `run --json` does."""
     inside = mi.Scene.default().with_velocity(1.0).run(history=False)
