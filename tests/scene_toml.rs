@@ -102,3 +102,30 @@ rigid = true
         round_trip(&scene);
     }
 }
+
+/// A bulk given as a Poisson ratio is written back as that ratio, not as the `k_0` computed from
+/// it (issue 27); one given as a modulus stays a modulus.
+#[test]
+fn a_poisson_ratio_is_written_back_as_given() {
+    let default = Scene::default_scene(); // [material] poisson = 0.49
+    let text = round_trip(&default).to_toml();
+    assert!(text.contains("\npoisson = 0.49 "), "{text}");
+    assert!(!text.contains("k_0"), "{text}");
+
+    let general = Scene::parse(
+        "[sphere]\nmass = 1.0\nradius = 1.0\n[impact]\nvelocity = 1.0\n\
+         [material.shear]\ng_inf = 1.0\nterms = [[5.0, 10.0]]\n[material.bulk]\npoisson = 0.3\n",
+    )
+    .unwrap();
+    let text = round_trip(&general).to_toml();
+    assert!(text.contains("[material.bulk]\npoisson = 0.3 "), "{text}");
+
+    let modulus = Scene::default_scene()
+        .to_toml()
+        .replace("poisson = 0.49", "k_0 = 5e7");
+    let text = round_trip(&Scene::parse(&modulus).unwrap()).to_toml();
+    assert!(
+        text.contains("k_0 = 50000000.0 ") && !text.contains("poisson"),
+        "{text}"
+    );
+}

@@ -15,7 +15,7 @@ impact(target, ...)
     One impact (a ``Scene``, or a material with sphere and velocity): an ``ImpactResult``.
 curve(scene, v0)
     CoR, contact time, maximum force and compression of a scene at many impact velocities.
-dem(scene, v0, log=False, modulus="relaxed")
+dem(scene, v0=(min, max, n), log=False, modulus="relaxed")
     DEM damping laws (LAMMPS, LIGGGHTS) fitted to the scene's CoR against impact velocity.
 
 Classes
@@ -23,6 +23,9 @@ Classes
 Material, GeneralMaterial, Prony, Sphere (profile: paraboloid or exact sphere), Indenter (cone,
 power law, flat punch, ...), Body, Scene, ImpactResult, Curve; ``Error`` (a
 ``ValueError``) for bad input and refused solves, with the message the command line prints.
+
+``__version__`` is the package's version (as ``importlib.metadata.version("mdr-impact")``),
+that of the ``mdr-impact`` crate and of ``mdr-impact --version``.
 
 Example
 -------
@@ -34,6 +37,7 @@ Example
 from __future__ import annotations
 
 import json
+import operator
 
 import numpy as np
 
@@ -53,6 +57,7 @@ from ._core import (
     Prony,
     Scene,
     Sphere,
+    __version__,
 )
 
 __all__ = [
@@ -256,6 +261,7 @@ class Curve:
     """
 
     def __init__(self, values):
+        """From the binding's dict of arrays (SI) and limits; made by ``curve``."""
         self.v0 = values["v0"]
         self.cor = values["cor"]
         self.contact_time = values["contact_time"]
@@ -316,7 +322,8 @@ def curve(scene, v0):
 
 def catalogue():
     """The validation catalogue's impact cases: a list of dicts ``id``, ``regime``, ``nu``,
-    ``p2``, ``p3`` (the cases of ``VALIDATION.md``)."""
+    ``p2``, ``p3`` (the dimensionless groups of Eq. (11); the cases of ``VALIDATION.md``), to
+    pass to ``cor``."""
     return _core.catalogue_impacts()
 
 
@@ -333,8 +340,11 @@ def dem(scene, v0, log=False, modulus="relaxed"):
     ----------
     scene : Scene
         The impact (sphere or two bodies, material(s), solver settings).
-    v0 : str
-        Velocities ``"MIN:MAX[:N]"`` (m/s, ``0 < MIN < MAX``), as the command's ``--v0``.
+    v0 : tuple
+        Impact velocities (m/s): ``(min, max)`` or ``(min, max, n)``, ``n`` velocities from
+        ``min`` to ``max`` (both included; finite ``0 < min < max``, ``2 <= n <= 100000``,
+        ``n = 50`` when left out). The command's text ``"MIN:MAX[:N]"`` is accepted too (then
+        errors name its ``--v0``).
     log : bool, optional
         Log-spaced velocities (default: evenly spaced).
     modulus : {"relaxed", "glassy"}, optional
@@ -350,16 +360,54 @@ def dem(scene, v0, log=False, modulus="relaxed"):
     Raises
     ------
     Error
-        (a ``ValueError``) with the command's message for a bad range or modulus or a failing
-        solve.
+        (a ``ValueError``) for a bad range, naming ``v0`` and the part that is wrong (``v0:
+        cannot read '(5.0, 0.5, 12)': expected (MIN, MAX) or (MIN, MAX, N) ...; MIN = 5e0 is
+        not below MAX = 5e-1``), a bad modulus, or a failing solve (named by its velocity), with
+        the command's message otherwise.
+
+    Examples
+    --------
+    >>> import mdr_impact as mi
+    >>> r = mi.dem(mi.Scene.default(), v0=(0.5, 5.0, 8), log=True)
+    >>> r["velocities"]["n"], r["velocities"]["max"], len(r["curve"])
+    (8, 5.0, 8)
     """
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a Scene, not {type(scene).__name__}")
-    text, lammps, liggghts = _core.dem_report(scene, str(v0), bool(log), str(modulus))
+    text, lammps, liggghts = _core.dem_report(scene, _velocities(v0), bool(log), str(modulus))
     report = json.loads(text)
     report["lammps"] = lammps
     report["liggghts"] = liggghts
     return report
+
+
+def _velocities(v0):
+    """``dem``'s ``v0`` for the binding: the command's text as it is, a tuple ``(min, max)`` or
+    ``(min, max, n)`` as ``(min, max, n or None)``; anything else is an ``Error`` naming ``v0``."""
+    if isinstance(v0, str):
+        return v0
+    form = "expected (MIN, MAX) or (MIN, MAX, N): velocities in m/s, N a whole number"
+    try:
+        parts = list(v0)
+    except TypeError:
+        raise Error(f"v0: {form}, not {type(v0).__name__}") from None
+    if len(parts) not in (2, 3):
+        raise Error(f"v0: {form}, not {len(parts)} values")
+    ends = []
+    for name, x in zip(("MIN", "MAX"), parts):
+        a = _floats(f"v0 {name}", x)
+        if a.shape != ():
+            raise Error(f"v0: {name} is a number, not an array of shape {a.shape}")
+        ends.append(float(a))
+    n = None
+    if len(parts) == 3:
+        try:
+            n = operator.index(parts[2])
+        except TypeError:
+            raise Error(f"v0: N = {parts[2]!r} is not a whole number") from None
+        if abs(n) >= 2**63:
+            raise Error(f"v0: N = {n} is out of range: allowed 2 <= N <= 100000")
+    return (ends[0], ends[1], n)
 
 
 def prony(data, terms="auto", modulus="shear", nu=None, t_ref=None, shift="wlf", out=None):

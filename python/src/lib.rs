@@ -196,7 +196,8 @@ fn catalogue_impacts(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
 /// `Prony(relaxed, terms=())` with `terms` a sequence of pairs `(c_i, tau_i)` (an `(n, 2)` array
 /// works). It only holds the numbers; they are checked where the series is used (a
 /// `GeneralMaterial` names `g_i[k]`, `tau_i[k]`, `k_j[k]`, `theta_j[k]` in its errors). Calling
-/// it evaluates `f(t)` elementwise (`t` in s, a scalar or an array).
+/// it evaluates `f(t)` (Pa) elementwise at the times `t` (s, `t >= 0`): a float for a scalar,
+/// else an array of the shape of `t`.
 #[pyclass(frozen, eq, module = "mdr_impact")]
 #[derive(Debug, Clone, PartialEq)]
 struct Prony {
@@ -338,7 +339,7 @@ impl Material {
     fn k_0(&self) -> f64 {
         self.solid.k_0()
     }
-    /// Static Poisson ratio (0.5 when incompressible).
+    /// Static Poisson ratio (dimensionless; 0.5 when incompressible).
     #[getter]
     fn poisson(&self) -> f64 {
         match self.solid.bulk() {
@@ -363,7 +364,10 @@ impl Material {
     }
     /// This standard solid as a `GeneralMaterial` (one shear term).
     fn general(&self) -> GeneralMaterial {
-        let bulk = BulkInput::from(self.inner.bulk().clone());
+        let bulk = match self.inner.written_poisson() {
+            Some(nu) => BulkInput::Poisson(nu),
+            None => BulkInput::from(self.inner.bulk().clone()),
+        };
         GeneralMaterial {
             inner: RsMaterial::general(self.inner.shear().clone(), bulk)
                 .expect("a validated shear series and resolved bulk"),
@@ -743,11 +747,15 @@ impl Body {
     }
 }
 
-/// An impact with its solver settings, as in a scene file: one `sphere` on a half-space of
-/// `material`, or two `bodies`; `velocity` (m/s) the (relative) normal impact velocity; the
-/// solver's `name`, `rtol`, and optionally an explicit MDR resolution `elements`, `steps`; the
-/// `[output]` paths `history_csv` (TOML key `history`) and `plot` are kept for `to_toml` (the
-/// files are written by `mdr-impact run`, not by `Scene.run`).
+/// An impact with its solver settings, as in a scene file (SI units): one `sphere` (a `Sphere`:
+/// kg, m) or `indenter` (an `Indenter`) on a half-space of `material` (`Material` or
+/// `GeneralMaterial`: Pa, Pa s, s), or two `bodies` (`Body`, `Body`); `velocity` (m/s) the
+/// (relative) normal impact velocity; the solver's name `solver` (`auto`, `fast`, `reference`,
+/// `mdr`, `mdr-euler`), `rtol` (requested relative accuracy of the CoR, dimensionless,
+/// `1e-12 <= rtol <= 0.1`, default `1e-6`), and optionally an explicit MDR resolution
+/// `elements`, `steps` (counts); the `[output]` paths `history_csv` (TOML key `history`) and
+/// `plot` are kept for `to_toml` (the files are written by `mdr-impact run`, not by
+/// `Scene.run`).
 #[pyclass(frozen, eq, module = "mdr_impact")]
 #[derive(Debug, Clone, PartialEq)]
 struct Scene {
@@ -896,7 +904,8 @@ impl Scene {
     }
 
     /// The same scene with another solver (`solver`: auto, fast, reference, mdr, mdr-euler)
-    /// and/or requested rtol; `None` keeps the scene's.
+    /// and/or requested `rtol` (relative accuracy of the CoR, dimensionless,
+    /// `1e-12 <= rtol <= 0.1`); `None` keeps the scene's.
     #[pyo3(signature = (solver = None, rtol = None))]
     fn with_solver(&self, solver: Option<&str>, rtol: Option<f64>) -> PyResult<Self> {
         let mut inner = self.inner.clone();
@@ -910,7 +919,8 @@ impl Scene {
         Ok(Self { inner })
     }
 
-    /// Solve the impact (GIL released), as `mdr-impact run` does; the result carries the
+    /// Solve the impact (GIL released), as `mdr-impact run` does: an `ImpactResult` (SI
+    /// units: m/s, s, m, N, J); the result carries the
     /// histories with `history=True`, or with `history=None` (default) when the scene has
     /// `[output]` paths (which is what makes `run` compute them too; the embedded default
     /// scene has none).
@@ -989,7 +999,7 @@ impl Scene {
     fn solver(&self) -> &'static str {
         self.inner.options.solver.name()
     }
-    /// Requested relative accuracy of the CoR.
+    /// Requested relative accuracy of the CoR (dimensionless).
     #[getter]
     fn rtol(&self) -> f64 {
         self.inner.options.rtol
@@ -1027,16 +1037,16 @@ impl Scene {
 // Results
 // ------------------------------------------------------------------------------------------
 
-/// The outcome of one impact (SI units): `cor`, `rebound_velocity` (m/s), `contact_time` (s),
+/// The outcome of one impact (SI units): `cor` (dimensionless), `rebound_velocity` (m/s), `contact_time` (s),
 /// `max_indentation` (m), `time_of_max_indentation` (s), `max_force` (N), `max_contact_radius`
-/// (m), `dissipated_energy` (J), `solver`, `estimated_rel_error` (`None` when the solver gives
-/// none), `fallback` (why `auto` did not answer with `fast`, else `None`), `work` (dict),
+/// (m), `dissipated_energy` (J), `solver`, `estimated_rel_error` (of the CoR, relative; `None`
+/// when the solver gives none), `fallback` (why `auto` did not answer with `fast`, else `None`), `work` (dict),
 /// `history` (dict of arrays `t`, `d`, `v`, `force`, `a` when asked, else `None`) and, for two
 /// bodies, `bodies` (`{"a": v_A, "b": v_B}`, m/s, velocities after the impact in the frame where B
 /// was at rest).
 #[pyclass(frozen, module = "mdr_impact")]
 struct ImpactResult {
-    /// Coefficient of restitution `e = -v_end / v0` (Eq. 10).
+    /// Coefficient of restitution `e = -v_end / v0` (Eq. 10; dimensionless).
     #[pyo3(get)]
     cor: f64,
     /// Rebound velocity at separation (m/s).
@@ -1060,7 +1070,7 @@ struct ImpactResult {
     /// Dissipated energy `m (v0^2 - v^2) / 2` (J).
     #[pyo3(get)]
     dissipated_energy: f64,
-    /// Estimated relative error of the CoR, `None` when the solver gives none.
+    /// Estimated relative error of the CoR (dimensionless), `None` when the solver gives none.
     #[pyo3(get)]
     estimated_rel_error: Option<f64>,
     /// The solver that answered.
@@ -1108,10 +1118,10 @@ impl ImpactResult {
 
 #[pymethods]
 impl ImpactResult {
-    /// Validity measures (`run --json`'s `validity`): `contact_radius_ratio` (a_max/R),
-    /// `indentation_ratio` (d_max/R), `sphere_force_excess` (the exact sphere's extra force at
-    /// a_max, relative; `None` beyond the sphere), `wave_transit_ratio` (`None` without a
-    /// density).
+    /// Validity measures (`run --json`'s `validity`), all dimensionless: `contact_radius_ratio`
+    /// (a_max/R), `indentation_ratio` (d_max/R), `sphere_force_excess` (the exact sphere's extra
+    /// force at a_max, relative; `None` beyond the sphere), `wave_transit_ratio`
+    /// (`2 a_max / (c_s t_c)`, shear wave transit over contact time; `None` without a density).
     #[getter]
     fn validity<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let v = &self.validity;
@@ -1122,7 +1132,8 @@ impl ImpactResult {
         d.set_item("wave_transit_ratio", v.wave_transit_ratio)?;
         Ok(d)
     }
-    /// Work counters: `steps`, `elements`, `element_updates`, `evaluations`, `levels`.
+    /// Work counters (counts): `steps`, `elements`, `element_updates`, `evaluations`,
+    /// `levels`; 0 where a counter does not apply to the solver.
     #[getter]
     fn work<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let w = self.work;
@@ -1232,27 +1243,38 @@ fn curve_values<'py>(
     Ok(d)
 }
 
-/// `mdr-impact dem` on `scene`: our `e(v0)` at the velocities `v0` (`MIN:MAX[:N]`, m/s, log
-/// spaced with `log`) and both DEM damping laws fitted with the Hertz stiffness of `modulus`
-/// (`relaxed` or `glassy`), GIL released. Returns the report as the command's JSON text and its
-/// LAMMPS and LIGGGHTS input lines.
+/// `mdr-impact dem` on `scene`: our `e(v0)` at the velocities `v0` and both DEM damping laws
+/// fitted with the Hertz stiffness of `modulus` (`relaxed` or `glassy`), GIL released. `v0` is
+/// the command's text `MIN:MAX[:N]` (errors name `--v0`) or the numbers `(MIN, MAX, N or None)`
+/// (m/s; errors name `v0`); log spaced with `log`. Returns the report as the command's JSON text
+/// and its LAMMPS and LIGGGHTS input lines.
 #[pyfunction]
 fn dem_report(
     py: Python<'_>,
     scene: PyRef<'_, Scene>,
-    v0: &str,
+    v0: DemVelocities,
     log: bool,
     modulus: &str,
 ) -> PyResult<(String, String, String)> {
-    let range = ok(curve::VelocityRange::parse_optional_n(
-        v0,
-        log,
-        dem::DEFAULT_VELOCITIES,
-    ))?;
+    let range = ok(match v0 {
+        DemVelocities::Text(text) => {
+            curve::VelocityRange::parse_optional_n(&text, log, dem::DEFAULT_VELOCITIES)
+        }
+        DemVelocities::Parts(min, max, n) => {
+            curve::VelocityRange::from_parts("v0", min, max, n, dem::DEFAULT_VELOCITIES, log)
+        }
+    })?;
     let modulus = ok(modulus.parse::<dem::ModulusChoice>())?;
     let s = &scene.inner;
     let report = ok(py.detach(|| dem::run(&s.impact, &s.options, &range, modulus, &|| {})))?;
     Ok((report.json(), report.lammps_text(), report.liggghts_text()))
+}
+
+/// The velocities of `dem_report`: the command line's text, or `(MIN, MAX, N or None)`.
+#[derive(FromPyObject)]
+enum DemVelocities {
+    Text(String),
+    Parts(f64, f64, Option<i64>),
 }
 
 /// `mdr-impact prony` on the DMA file `data` (the command's JSON report as text); with `out`,
@@ -1289,6 +1311,8 @@ fn prony_report(
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("Error", m.py().get_type::<Error>())?;
+    // the package version: python/Cargo.toml's, which maturin also writes into the metadata
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add("DEFAULT_RTOL", tolerances::DEFAULT_RTOL)?;
     m.add("MIN_RTOL", tolerances::MIN_RTOL)?;
     m.add("MAX_RTOL", tolerances::MAX_RTOL)?;

@@ -133,6 +133,32 @@ def test_dem_matches_cli(cli, root, tmp_path):
         mi.dem(mi.Scene.load(path), "5:0.5")
     p = cli("dem", path, "--v0", "5:0.5", "--format", "json", check=False)
     assert p.stderr.strip() == f"error: {err.value}"
+    # the same range as a tuple: the same report
+    t = mi.dem(mi.Scene.load(path), v0=(0.5, 5, 12), log=True)
+    t.pop("liggghts")
+    t.pop("lammps")
+    assert t == js
+
+
+@pytest.mark.parametrize("v0,message", [
+    ((5.0, 0.5), r"^v0: cannot read '\(5\.0, 0\.5\)': expected \(MIN, MAX\) or \(MIN, MAX, N\) "
+                 r".*N = 50 when left out\); MIN = 5e0 is not below MAX = 5e-1$"),
+    ((0.5, 5.0, 1), r"^v0: .*; N = 1 is out of range: allowed 2 <= N <= 100000 "
+                    r"\(one velocity: use impact\)$"),
+    ((0.5, 5.0, -3), r"; N = -3 is out of range"),
+    ((0.0, 5.0), r"; MIN = 0e0 is out of range: allowed 0 < velocity < inf \(m/s\)$"),
+    ((0.5, float("inf"), 4), r"; MAX = inf is out of range"),
+    ((0.5, 5.0, 2.5), r"^v0: N = 2\.5 is not a whole number$"),
+    ((0.5,), r"^v0: expected \(MIN, MAX\) or \(MIN, MAX, N\).*not 1 values$"),
+    (5.0, r"^v0: expected \(MIN, MAX\) or \(MIN, MAX, N\).*not float$"),
+    (("a", 5.0), r"^v0 MIN: not a real number"),
+    (([0.5, 1.0], 5.0), r"^v0: MIN is a number, not an array of shape \(2,\)$"),
+])
+def test_dem_velocity_errors_name_v0(v0, message):
+    """`dem(v0=...)`: errors in Python terms, naming `v0`, never the command line's `--v0`."""
+    with pytest.raises(mi.Error, match=message) as err:
+        mi.dem(mi.Scene.default(), v0=v0)
+    assert "--v0" not in str(err.value)
 
 
 def test_prony_equals_the_command(root, tmp_path, cli):
@@ -146,3 +172,15 @@ def test_prony_equals_the_command(root, tmp_path, cli):
     assert report["shift"]["kind"] == "wlf"
     with pytest.raises(mi.Error, match="--terms"):
         mi.prony(data, terms="zero")
+
+
+def test_version_is_the_crates_and_the_packages(cli, root):
+    """`__version__`: the installed package's metadata, the crate's and `mdr-impact --version`."""
+    import importlib.metadata
+    import re
+
+    assert re.fullmatch(r"\d+\.\d+\.\d+\S*", mi.__version__)
+    assert mi.__version__ == importlib.metadata.version("mdr-impact")
+    crate = re.search(r'^version = "([^"]+)"', (root / "Cargo.toml").read_text(), re.M)
+    assert mi.__version__ == crate.group(1)
+    assert cli("--version").stdout.split() == ["mdr-impact", mi.__version__]

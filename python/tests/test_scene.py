@@ -90,6 +90,22 @@ def test_scene_round_trips(root, tmp_path):
     assert loaded.with_velocity(3.0).velocity == 3.0
 
 
+def test_to_toml_keeps_a_poisson_ratio_as_given():
+    """A bulk given as a Poisson ratio comes back as that ratio, not as the k_0 it gives."""
+    m = mi.Material(1.0e6, 1.0e7, 500.0, poisson=0.49)
+    scene = mi.Scene(sphere=mi.Sphere(4.11e-3, 5e-3), material=m, velocity=0.99)
+    text = scene.to_toml()
+    assert "\npoisson = 0.49 " in text and "k_0" not in text
+    assert mi.Scene.from_toml(text) == scene
+    assert "\npoisson = 0.49 " in mi.Scene.default().to_toml()
+    general = mi.GeneralMaterial(mi.Prony(1e6, [(1e7, 5e-5)]), poisson=0.3)
+    text = mi.Scene(sphere=mi.Sphere(1e-3, 1e-3), material=general, velocity=1.0).to_toml()
+    assert "[material.bulk]\npoisson = 0.3 " in text
+    text = mi.Scene(sphere=mi.Sphere(1e-3, 1e-3), material=mi.Material(1e6, 1e7, 500.0, k_0=5e7),
+                    velocity=1.0).to_toml()
+    assert "k_0 = 50000000.0 " in text and "poisson" not in text
+
+
 def test_prony_table_files_are_relative_to_the_scene(tmp_path):
     (tmp_path / "g.csv").write_text("tau,modulus\n1e-6,1e7\n1e-3,2e5\n")
     (tmp_path / "s.toml").write_text(
@@ -151,6 +167,26 @@ def test_curve_shapes_and_errors():
 def test_docstring_examples():
     failures, tried = doctest.testmod(mi, verbose=False)
     assert tried > 0 and failures == 0
+
+
+def test_every_public_name_has_its_own_docstring():
+    """help() says what each public function, class, method and attribute is (with units)."""
+    import inspect
+    missing = []
+    for name in mi.__all__:
+        obj = getattr(mi, name)
+        if not callable(obj):
+            continue
+        if not (obj.__doc__ or "").strip():
+            missing.append(name)
+        if inspect.isclass(obj) and not issubclass(obj, Exception):
+            for k, v in vars(obj).items():
+                if k.startswith("_"):  # slots (__call__, ...) are in the class's docstring
+                    continue
+                doc = inspect.getdoc(getattr(obj, k)) or ""
+                if not doc.strip():
+                    missing.append(f"{name}.{k}")
+    assert missing == []
 
 
 def test_validity_and_warnings_as_run_json():

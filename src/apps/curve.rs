@@ -114,27 +114,76 @@ impl VelocityRange {
             }
         };
         let (min, max) = (num(a)?, num(b)?);
-        let n: usize = n
+        let n: i64 = n
             .parse()
             .map_err(|_| bad(&format!("N = '{n}' is not a whole number")))?;
+        Self::checked(min, max, n, log, "run").map_err(|why| bad(&why))
+    }
+
+    /// The range `(MIN, MAX[, N])` given as numbers (the Python package's
+    /// `dem(v0=(min, max, n))`), `N = default_n` when `None`: the checks of
+    /// [`VelocityRange::parse`], but every error names `field` (e.g. `"v0"`) and the range as the
+    /// tuple it was given as, never the command line's `--v0`.
+    pub fn from_parts(
+        field: &'static str,
+        min: f64,
+        max: f64,
+        n: Option<i64>,
+        default_n: usize,
+        log: bool,
+    ) -> Result<Self> {
+        let given = match n {
+            Some(n) => format!("({min:?}, {max:?}, {n})"),
+            None => format!("({min:?}, {max:?})"),
+        };
+        let n = n.unwrap_or(default_n as i64);
+        Self::checked(min, max, n, log, "impact").map_err(|why| Error::Parse {
+            what: field,
+            input: given,
+            expected: format!(
+                "(MIN, MAX) or (MIN, MAX, N) (m/s, 0 < MIN < MAX, 2 <= N <= {MAX_VELOCITIES}, \
+                 N = {default_n} when left out); {why}"
+            ),
+        })
+    }
+
+    /// The range of the numbers `min`, `max`, `n`, or what is wrong with them, in words
+    /// (`MIN = 2e0 is not below MAX = 1e0`); `one` is what to use for one velocity.
+    fn checked(
+        min: f64,
+        max: f64,
+        n: i64,
+        log: bool,
+        one: &str,
+    ) -> std::result::Result<Self, String> {
+        for (name, v) in [("MIN", min), ("MAX", max)] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(format!(
+                    "{name} = {v:e} is out of range: allowed 0 < velocity < inf (m/s)"
+                ));
+            }
+        }
         if !(min < max) {
-            return Err(bad(&format!("MIN = {min:e} is not below MAX = {max:e}")));
+            return Err(format!("MIN = {min:e} is not below MAX = {max:e}"));
         }
-        if !(2..=MAX_VELOCITIES).contains(&n) {
-            let hint = if n == 1 {
-                " (one velocity: use run)"
-            } else {
-                ""
-            };
-            return Err(bad(&format!(
-                "N = {n} is out of range: allowed 2 <= N <= {MAX_VELOCITIES}{hint}"
-            )));
-        }
+        let n = match usize::try_from(n) {
+            Ok(n) if (2..=MAX_VELOCITIES).contains(&n) => n,
+            _ => {
+                let hint = if n == 1 {
+                    format!(" (one velocity: use {one})")
+                } else {
+                    String::new()
+                };
+                return Err(format!(
+                    "N = {n} is out of range: allowed 2 <= N <= {MAX_VELOCITIES}{hint}"
+                ));
+            }
+        };
         let r = Self { min, max, n, log };
         // log spacing of extreme ends must not round to equal or non-finite values
         let v = r.values();
         if v.iter().any(|x| !(x.is_finite() && *x > 0.0)) {
-            return Err(bad("the velocities are not all finite and positive"));
+            return Err("the velocities are not all finite and positive".into());
         }
         Ok(r)
     }

@@ -1,8 +1,10 @@
 //! A validated [`Scene`] written back as scene TOML ([`Scene::to_toml`]), so that a scene built
 //! in code (or by the Python package) can be saved and read again by `mdr-impact run`.
 //!
-//! The text is in the validated form: a standard solid is written with `k_0` (or `poisson = 0.5`
-//! when incompressible), a general material with `g_inf` and `terms` (a Prony table `file` or
+//! The text is in the validated form, with the bulk as it was given: an elastic bulk given by a
+//! Poisson ratio is written as `poisson` (the ratio given, [`Material::written_poisson`]), one
+//! given as a modulus with `k_0`, an incompressible one as `poisson = 0.5` (standard solid) or
+//! `incompressible = true`; a general material with `g_inf` and `terms` (a Prony table `file` or
 //! the normalised FE form are written as the terms they were turned into), a body given by its
 //! density with its `mass`. Numbers are written in Rust's shortest round-trip form, so
 //! [`Scene::parse`] of the text gives back a scene equal to the original (`==`), bit for bit.
@@ -53,22 +55,28 @@ fn string(s: &str) -> String {
 /// `body.material`): a standard solid's parameters, or the shear and bulk tables.
 fn material(out: &mut String, table: &str, m: &Material) {
     match m.as_standard_solid() {
-        Some(s) if m.is_written_as_standard_solid() => standard_solid(out, table, &s),
+        Some(s) if m.is_written_as_standard_solid() => {
+            standard_solid(out, table, &s, m.written_poisson())
+        }
         _ => general(out, table, m),
     }
 }
 
-/// The keys of a standard solid, in the table `table` (`material` or `body.material`).
-fn standard_solid(out: &mut String, table: &str, m: &StandardSolid) {
+/// The keys of a standard solid, in the table `table` (`material` or `body.material`); an
+/// elastic bulk as the Poisson ratio `poisson` it was computed from, when given.
+fn standard_solid(out: &mut String, table: &str, m: &StandardSolid, poisson: Option<f64>) {
     let _ = writeln!(out, "[{table}]");
     let _ = writeln!(out, "g_inf = {}       # Pa", num(m.g_inf()));
     let _ = writeln!(out, "g_1 = {}         # Pa", num(m.g_1()));
     let _ = writeln!(out, "eta = {}         # Pa s", num(m.eta()));
-    match m.bulk() {
-        Bulk::Modulus(k) => {
+    match (m.bulk(), poisson) {
+        (Bulk::Modulus(_), Some(nu)) => {
+            let _ = writeln!(out, "poisson = {}     # static Poisson ratio", num(nu));
+        }
+        (Bulk::Modulus(k), None) => {
             let _ = writeln!(out, "k_0 = {}         # Pa", num(k));
         }
-        Bulk::Incompressible => out.push_str("poisson = 0.5       # incompressible\n"),
+        (Bulk::Incompressible, _) => out.push_str("poisson = 0.5       # incompressible\n"),
     }
 }
 
@@ -84,9 +92,14 @@ fn general(out: &mut String, table: &str, m: &Material) {
     let _ = writeln!(out, "\n[{table}.bulk]");
     match m.bulk() {
         BulkRheology::Incompressible => out.push_str("incompressible = true\n"),
-        BulkRheology::Elastic(k) => {
-            let _ = writeln!(out, "k_0 = {}         # Pa", num(*k));
-        }
+        BulkRheology::Elastic(k) => match m.written_poisson() {
+            Some(nu) => {
+                let _ = writeln!(out, "poisson = {}     # static Poisson ratio", num(nu));
+            }
+            None => {
+                let _ = writeln!(out, "k_0 = {}         # Pa", num(*k));
+            }
+        },
         BulkRheology::Prony(p) => {
             let _ = writeln!(out, "k_inf = {}       # Pa", num(p.k_inf()));
             let _ = writeln!(

@@ -40,6 +40,10 @@ pub struct Material {
     /// `(G_1, eta)` as given to a standard-solid constructor: exact (`eta` is not recomputed
     /// from `G_1 tau`) and kept when the shear has no term (`G_1 = 0` or `eta = 0`).
     written: Option<(f64, f64)>,
+    /// The static Poisson ratio the elastic bulk was computed from, when it was given as one
+    /// ([`Material::with_poisson`], [`BulkInput::Poisson`]): how it was written, so that a scene
+    /// writes it back as `poisson` ([`Material::written_poisson`]). Not part of `==`.
+    poisson: Option<f64>,
     /// Mass density (kg/m³), when known: only the quasi-static check of an answer uses it
     /// ([`crate::model::validity`]).
     density: Option<f64>,
@@ -100,7 +104,9 @@ impl Material {
                     "-1 < nu <= 0.5 with K_0 = 2 G_inf (1 + nu) / (3 (1 - 2 nu)) finite and > 0",
             });
         }
-        Self::with_bulk(g_inf, g_1, eta, Bulk::Modulus(k_0))
+        let mut m = Self::with_bulk(g_inf, g_1, eta, Bulk::Modulus(k_0))?;
+        m.poisson = Some(nu);
+        Ok(m)
     }
 
     /// Incompressible standard solid (`K_0 = inf`, `nu = 0.5`).
@@ -125,6 +131,7 @@ impl Material {
             shear: ShearProny::standard(g_inf, term),
             bulk,
             written: Some((g_1, eta)),
+            poisson: None,
             density: None,
         })
     }
@@ -144,11 +151,18 @@ impl Material {
     /// assert_eq!(m.as_standard_solid().unwrap().g_1(), 99.0);
     /// ```
     pub fn general(shear: ShearProny, bulk: BulkInput) -> Result<Self> {
+        let given = match bulk {
+            BulkInput::Poisson(nu) => Some(nu),
+            _ => None,
+        };
         let bulk = bulk.resolve(shear.g_inf())?;
+        // an incompressible bulk is written as such whatever it was given as
+        let poisson = given.filter(|_| matches!(bulk, BulkRheology::Elastic(_)));
         Ok(Self {
             shear,
             bulk,
             written: None,
+            poisson,
             density: None,
         })
     }
@@ -197,6 +211,20 @@ impl Material {
     /// is computed goes by shape ([`Material::as_standard_solid`]), never by this.
     pub fn is_written_as_standard_solid(&self) -> bool {
         self.written.is_some()
+    }
+
+    /// The static Poisson ratio the elastic bulk was computed from, when the material was given
+    /// one ([`Material::with_poisson`] with `nu < 0.5`, [`BulkInput::Poisson`]): how it was
+    /// written, for export (a scene writes `poisson = 0.49` back, not the `k_0` it gave). `None`
+    /// for a bulk given as a modulus, a series or incompressible.
+    ///
+    /// ```
+    /// # use mdr_impact::model::material::Material;
+    /// assert_eq!(Material::with_poisson(1.0, 4.0, 2.0, 0.49).unwrap().written_poisson(), Some(0.49));
+    /// assert_eq!(Material::new(1.0, 4.0, 2.0, 50.0).unwrap().written_poisson(), None);
+    /// ```
+    pub fn written_poisson(&self) -> Option<f64> {
+        self.poisson
     }
 
     /// The shear relaxation.
