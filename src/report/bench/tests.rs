@@ -272,6 +272,7 @@ fn report(quick: bool) -> BenchReport {
         },
         batch: Some((1000, 0.25)),
         curve_seconds: 0.0125,
+        shapes: vec![],
         machine: "a test machine".into(),
     }
 }

@@ -563,7 +563,7 @@ impl<const K: usize> Solver<K> {
         let width = hi - lo;
         let (mut a, mut b, mut m) = (lo, hi, t0.clamp(lo, hi));
         let (mut fa, mut fb, mut fm) = (force(a), force(b), force(m));
-        if !(fm >= fa && fm >= fb) || !(m > a && m < b) {
+        if !(fm >= fa && fm >= fb && m > a && m < b) {
             // the largest value sits at an end of the window: no interior maximum to refine
             return fa.max(fb).max(fm);
         }
