@@ -561,13 +561,35 @@ impl<const K: usize> Solver<K> {
             self.force_comp(&pt)
         };
         let width = hi - lo;
+        let golden = 0.5 * (3.0 - 5f64.sqrt());
         let (mut a, mut b, mut m) = (lo, hi, t0.clamp(lo, hi));
         let (mut fa, mut fb, mut fm) = (force(a), force(b), force(m));
-        if !(fm >= fa && fm >= fb && m > a && m < b) {
-            // the largest value sits at an end of the window: no interior maximum to refine
-            return fa.max(fb).max(fm);
+        if !(m > a && m < b) {
+            // the node sits at an end of the window (the turn): start from its interior
+            m = if m >= b { b - golden * (b - a) } else { a + golden * (b - a) };
+            fm = force(m);
         }
-        let golden = 0.5 * (3.0 - 5f64.sqrt());
+        if !(fm >= fa && fm >= fb) {
+            // no interior point above both ends: a golden section over the window (the maximum
+            // may still be interior, or sit at an end)
+            let (mut x1, mut x2) = (b - (1.0 - golden) * (b - a), a + (1.0 - golden) * (b - a));
+            let (mut f1, mut f2) = (force(x1), force(x2));
+            for _ in 0..60 {
+                if b - a <= 1e-7 * width {
+                    break;
+                }
+                if f1 < f2 {
+                    (a, x1, f1) = (x1, x2, f2);
+                    x2 = a + (1.0 - golden) * (b - a);
+                    f2 = force(x2);
+                } else {
+                    (b, x2, f2) = (x2, x1, f1);
+                    x1 = b - (1.0 - golden) * (b - a);
+                    f1 = force(x1);
+                }
+            }
+            return f1.max(f2).max(fa).max(fb).max(fm);
+        }
         for _ in 0..40 {
             let (p, q) = ((m - a) * (fm - fb), (m - b) * (fm - fa));
             let den = p - q;
