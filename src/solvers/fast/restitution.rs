@@ -566,7 +566,11 @@ impl<const K: usize> Solver<K> {
         let (mut fa, mut fb, mut fm) = (force(a), force(b), force(m));
         if !(m > a && m < b) {
             // the node sits at an end of the window (the turn): start from its interior
-            m = if m >= b { b - golden * (b - a) } else { a + golden * (b - a) };
+            m = if m >= b {
+                b - golden * (b - a)
+            } else {
+                a + golden * (b - a)
+            };
             fm = force(m);
         }
         if !(fm >= fa && fm >= fb) {
