@@ -91,7 +91,7 @@ pub fn run(
     force_curve(material, shape, &history, times, method)
 }
 
-/// The header of [`csv`]: time (s), depth (m), contact radius (m), force (N).
+/// The header of [`csv()`]: time (s), depth (m), contact radius (m), force (N).
 pub const CSV_HEADER: &str = "t_s,d_m,a_m,force_N";
 
 /// The rows as CSV with the header [`CSV_HEADER`] (SI, the crate's number format).

@@ -1,6 +1,10 @@
 //! The `fast` impact solver: Lee–Radok in compression, Ting/Graham in restitution, on the
 //! indentation `d(t)` alone (docs/theory.md §4–§5), with exact exponential kernels.
 //!
+//! Written for the paraboloid (`w = d^(3/2)` below); any other indenter but the flat punch runs
+//! through [`impact_on`] with its `w(d)` and `a(d)` (docs/theory.md §11; its cost against the
+//! paraboloid is in VALIDATION.md §9).
+//!
 //! # Why no elements
 //! All MDR elements in contact share one rate `u_i' = d'` and leave last-in-first-out
 //! (docs/theory.md §5), so the force is a functional of `d(t)` alone. With a Prony series

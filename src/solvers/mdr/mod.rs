@@ -41,8 +41,8 @@ use network::NetFoundation;
 /// spacing `dx` with `p = 2 / n`, so that the first element's `g` is `O(dx^2)` as for the
 /// paraboloid (a uniform grid would leave an `O(dx)` tail of the force unresolved at the start
 /// and the end of contact). The map is `x = S (s / S)^p` with `S` the contact radius the grid
-/// was laid out for (`capacity` covers four of them, [`capacity_for`]), so that a graded grid
-/// has as many elements across that radius as a uniform one. Each element's force weight is
+/// was laid out for (`capacity` covers four of them), so that a graded grid has as many
+/// elements across that radius as a uniform one. Each element's force weight is
 /// `8` times its cell width.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Foundation {
