@@ -534,6 +534,15 @@ fn exact_profile(profile: &str) -> PyResult<bool> {
     }
 }
 
+/// The profile's name: `"sphere"` for the exact cap, else `"paraboloid"`.
+fn profile_name(exact: bool) -> &'static str {
+    if exact {
+        "sphere"
+    } else {
+        "paraboloid"
+    }
+}
+
 #[pymethods]
 impl Sphere {
     #[new]
@@ -544,14 +553,10 @@ impl Sphere {
             exact: exact_profile(profile)?,
         })
     }
-    /// `"paraboloid"` or `"sphere"`.
+    /// `"paraboloid"` or `"sphere"` (the exact cap).
     #[getter]
     fn profile(&self) -> &'static str {
-        if self.exact {
-            "sphere"
-        } else {
-            "paraboloid"
-        }
+        profile_name(self.exact)
     }
     /// Mass (kg).
     #[getter]
@@ -718,11 +723,7 @@ impl Body {
     /// `"paraboloid"` or `"sphere"` (the exact cap).
     #[getter]
     fn profile(&self) -> &'static str {
-        if self.exact {
-            "sphere"
-        } else {
-            "paraboloid"
-        }
+        profile_name(self.exact)
     }
     /// True for a rigid body.
     #[getter]
