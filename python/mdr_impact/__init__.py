@@ -17,6 +17,8 @@ curve(scene, v0)
     CoR, contact time, maximum force and compression of a scene at many impact velocities.
 dem(scene, v0=(min, max, n), log=False, modulus="relaxed")
     DEM damping laws (LAMMPS, LIGGGHTS) fitted to the scene's CoR against impact velocity.
+fit(data, scene=None, model="standard-solid", fix=None, tau_range=None, out=None)
+    Material parameters from drop tests, with intervals (``mdr-impact fit``).
 
 Classes
 -------
@@ -80,6 +82,7 @@ __all__ = [
     "cor",
     "curve",
     "dem",
+    "fit",
     "impact",
     "prony",
 ]
@@ -445,4 +448,47 @@ def prony(data, terms="auto", modulus="shear", nu=None, t_ref=None, shift="wlf",
     """
     text = _core.prony_report(str(data), str(terms), str(modulus), nu, t_ref, str(shift),
                               None if out is None else str(out))
+    return json.loads(text)
+
+
+def fit(data, scene=None, model="standard-solid", fix=None, tau_range=None, out=None):
+    """Material parameters from drop tests (``mdr-impact fit``, docs/reference.md "Fitting").
+
+    Parameters
+    ----------
+    data : str or path
+        CSV ``v0,cor[,cor_sd,contact_time,contact_time_sd,setup]``: impact velocity (m/s), CoR,
+        their standard deviations, contact time (s); ``setup`` names a scene file (relative to
+        the data file) per row.
+    scene : Scene, optional
+        The impactor that was dropped (any shape) for rows without ``setup`` (default: the
+        embedded default scene's sphere).
+    model : str, optional
+        ``"standard-solid"`` (default) or ``"prony:N"`` (N log-spaced times, fitted moduli).
+    fix : dict, optional
+        Parameters held fixed, in SI: ``{"nu": 0.49}``, ``{"g_inf": 1e6}``, ... (the names of
+        ``--fix``).
+    tau_range : tuple, optional
+        ``(min, max)`` relaxation times (s) of a Prony model.
+    out : str or path, optional
+        Folder for ``fit.toml`` and ``fit.svg``.
+
+    Returns
+    -------
+    dict
+        The command's JSON report (``fit --json``): ``parameters`` and ``groups`` with values
+        (SI), 95 % intervals and whether the data determine them, the goodness of fit, the
+        residuals and ``warnings``.
+
+    Raises
+    ------
+    Error
+        (a ``ValueError``) with the command's message for bad data or options.
+    """
+    fixes = [] if fix is None else [(str(k), float(v)) for k, v in dict(fix).items()]
+    if tau_range is not None:
+        lo, hi = tau_range
+        tau_range = (float(lo), float(hi))
+    text = _core.fit_report(str(data), scene, str(model), fixes, tau_range,
+                            None if out is None else str(out))
     return json.loads(text)

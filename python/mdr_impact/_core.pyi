@@ -2,7 +2,7 @@
 
 from os import PathLike
 from pathlib import Path
-from typing import Any, Optional, Sequence, Tuple, Union
+from typing import Any, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -169,3 +169,6 @@ class Scene:
     def plot(self) -> Optional[Path]: ...
     @property
     def groups(self) -> Optional[Tuple[float, float, float]]: ...
+
+def fit_report(data: str, scene: Optional[Scene], model: str, fix: List[Tuple[str, float]],
+               tau_range: Optional[Tuple[float, float]], out: Optional[str]) -> str: ...

@@ -1309,6 +1309,46 @@ fn prony_report(
     Ok(dma::json(&report).to_string())
 }
 
+/// `mdr-impact fit` on the drop-test file `data` with the impactor of `scene` (the embedded
+/// default when `None`): the command's JSON report as text; with `out`, `fit.toml` and
+/// `fit.svg` are written there too. `fix` pairs `(name, value)` as `--fix name=value`;
+/// `tau_range` `(min, max)` (s) as `--tau-range`.
+#[pyfunction]
+#[pyo3(signature = (data, scene, model, fix, tau_range, out))]
+fn fit_report(
+    py: Python<'_>,
+    data: PathBuf,
+    scene: Option<PyRef<'_, Scene>>,
+    model: &str,
+    fix: Vec<(String, f64)>,
+    tau_range: Option<(f64, f64)>,
+    out: Option<PathBuf>,
+) -> PyResult<String> {
+    use mdr_impact::apps::fit;
+    let kind = ok(model.parse::<fit::ModelKind>())?;
+    let fixes = fix
+        .iter()
+        .map(|(name, value)| ok(format!("{name}={value:e}").parse::<fit::Fix>()))
+        .collect::<PyResult<Vec<_>>>()?;
+    let (scene, name) = match &scene {
+        Some(s) => (s.inner.clone(), "the scene".to_string()),
+        None => (RsScene::default_scene(), "default scene".to_string()),
+    };
+    let impactor = ok(fit::data::scene_sphere(&scene, &name))?;
+    let range = tau_range.map(|(lo, hi)| format!("{lo:e}:{hi:e}"));
+    let result = py.detach(|| -> mdr_impact::Result<_> {
+        let data = fit::data::read(&data, impactor, &name)?;
+        let taus = fit::prony_times(&kind, range.as_deref(), &data)?;
+        let (model, fixed) = fit::setup_model(kind, &fixes, taus)?;
+        fit::fit(&model, &data, &fixed)
+    });
+    let result = ok(result)?;
+    if let Some(dir) = out {
+        ok(fit::report::write_outputs(&dir, &result))?;
+    }
+    Ok(fit::report::json(&result).to_string())
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("Error", m.py().get_type::<Error>())?;
@@ -1324,6 +1364,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(catalogue_impacts, m)?)?;
     m.add_function(wrap_pyfunction!(dem_report, m)?)?;
     m.add_function(wrap_pyfunction!(prony_report, m)?)?;
+    m.add_function(wrap_pyfunction!(fit_report, m)?)?;
     m.add_class::<Prony>()?;
     m.add_class::<Material>()?;
     m.add_class::<GeneralMaterial>()?;
