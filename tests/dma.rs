@@ -8,73 +8,27 @@
 
 mod common;
 
+/// The round trip's pieces of `report::validate::dma` (the section 1f of VALIDATION.md), unwrapped.
+fn true_law() -> ShiftLaw {
+    mdr_impact::report::validate::dma::true_law().unwrap()
+}
+fn synthetic(temperatures: &[f64], per_decade: usize, noise: f64, seed: u64) -> String {
+    mdr_impact::report::validate::dma::synthetic(temperatures, per_decade, noise, seed).unwrap()
+}
+fn cor(series: &dma::prony_fit::PronySeries) -> f64 {
+    mdr_impact::report::validate::dma::cor(series).unwrap()
+}
+fn fit_text(text: &str, opts: &dma::PronyOptions) -> dma::PronyReport {
+    mdr_impact::report::validate::dma::fit_text(text, opts).unwrap()
+}
+
 use std::fmt::Write as _;
 use std::path::Path;
 
-use mdr_impact::apps::dma::{self, data, prony_fit::PronySeries, shift::ShiftLaw};
+use mdr_impact::apps::dma::{self, data, shift::ShiftLaw};
 use mdr_impact::io::scene::Scene;
-use mdr_impact::model::material::{BulkInput, ShearProny};
-use mdr_impact::rng::SplitMix64;
-use mdr_impact::{solve, Impact, Material, SolveOptions, Sphere};
-
-/// The true material: `g_inf = 1 MPa` and 20 terms, `tau_i` log-spaced from 1e-6 s to 1e2 s,
-/// `g_i = 2.0e7 Pa (tau_i / 1e-6 s)^(-0.4)` (a power-law transition; glassy ~0.16 GPa), at 20 °C.
-fn truth() -> PronySeries {
-    let terms = (0..20)
-        .map(|k| {
-            let tau = 1e-6 * 10f64.powf(8.0 * k as f64 / 19.0);
-            (2.0e7 * (tau / 1e-6).powf(-0.4), tau)
-        })
-        .collect();
-    PronySeries {
-        g_inf: 1.0e6,
-        terms,
-    }
-}
-
-/// The true shift law: WLF, c1 = 8, c2 = 150 K at 20 °C.
-fn true_law() -> ShiftLaw {
-    ShiftLaw::wlf(8.0, 150.0, 20.0).unwrap()
-}
-
-/// CSV text of synthetic DMA data: `temperatures` (°C), `per_decade` frequencies per decade
-/// from 0.01 Hz to 100 Hz, `G'` and `G''` of [`truth`] at `omega a_T`, each times
-/// `(1 + noise n)` with a standard normal `n` from `SplitMix64::new(seed)`.
-fn synthetic(temperatures: &[f64], per_decade: usize, noise: f64, seed: u64) -> String {
-    let g = truth();
-    let law = true_law();
-    let mut rng = SplitMix64::new(seed);
-    let mut s = String::from("temperature,frequency,storage,loss\n");
-    for &t in temperatures {
-        let a = 10f64.powf(law.log10_a(t).unwrap());
-        let n = 4 * per_decade;
-        for k in 0..=n {
-            let f = 10f64.powf(-2.0 + 4.0 * k as f64 / n as f64);
-            let w = std::f64::consts::TAU * f * a;
-            let g1 = g.storage(w) * (1.0 + noise * rng.normal());
-            let g2 = g.loss(w) * (1.0 + noise * rng.normal());
-            let _ = writeln!(s, "{t},{f:.6e},{g1:.6e},{g2:.6e}");
-        }
-    }
-    s
-}
-
-fn grid() -> Vec<f64> {
-    (0..12).map(|k| -30.0 + 10.0 * k as f64).collect()
-}
-
-/// CoR of a 10 mm steel ball (4.11 g) at 1 m/s on the incompressible `series`.
-fn cor(series: &PronySeries) -> f64 {
-    let shear = ShearProny::new(series.g_inf, &series.terms).unwrap();
-    let m = Material::general(shear, BulkInput::Incompressible).unwrap();
-    let impact = Impact::with_general(Sphere::new(4.11e-3, 5.0e-3).unwrap(), 1.0, m).unwrap();
-    solve(&impact, &SolveOptions::default()).unwrap().cor
-}
-
-fn fit_text(text: &str, opts: &dma::PronyOptions) -> dma::PronyReport {
-    let d = data::parse(text, "synthetic.csv", data::ModulusKind::Shear, 0.5).unwrap();
-    dma::fit(&d, opts).unwrap()
-}
+use mdr_impact::report::validate::dma::{grid, truth};
+use mdr_impact::solve;
 
 #[test]
 fn shifts_fit_and_cor_from_noisy_synthetic_data() {
@@ -273,4 +227,19 @@ fn tensile_data_are_converted_and_noise_level_loss_is_flagged() {
         "{:?}",
         d.warnings
     );
+}
+
+/// VALIDATION.md section 1f: the round trip without noise and at 1 % noise for five seeds.
+#[test]
+fn round_trips_of_the_validation_table() {
+    use mdr_impact::report::validate::dma::round_trip;
+    // without noise the errors are the fit's own (its times and window), and stay within the
+    // same promises as with noise
+    for (noise, seed) in [(0.0, 1)].into_iter().chain((1..=5).map(|s| (0.01, s))) {
+        let (shift, rms, terms, cor) = round_trip(noise, seed).unwrap();
+        assert!(shift < 0.05, "seed {seed}: shift error {shift} decades");
+        assert!(rms < 0.015, "seed {seed}: rms {rms}");
+        assert!(terms > 0);
+        assert!(cor < 0.01, "seed {seed}: CoR error {cor}");
+    }
 }
