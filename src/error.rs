@@ -326,6 +326,42 @@ impl ErrorKind {
 }
 
 impl Error {
+    /// The variant name of an error (of the error it wraps, for [`Error::In`]): the category names
+    /// of the stress section (`report::stress`). Exhaustive, so a new variant must be named here.
+    pub fn variant_name(&self) -> &'static str {
+        match self {
+            Error::OutOfRange { .. } => "OutOfRange",
+            Error::PronyTerm { .. } => "PronyTerm",
+            Error::UnstableStep { .. } => "UnstableStep",
+            Error::WorkLimit { .. } => "WorkLimit",
+            Error::NotAsymptotic { .. } => "NotAsymptotic",
+            Error::StepSizeTooSmall { .. } => "StepSizeTooSmall",
+            Error::AccuracyNotReached { .. } => "AccuracyNotReached",
+            Error::NoConvergence { .. } => "NoConvergence",
+            Error::Quadrature { .. } => "Quadrature",
+            Error::NonFinite { .. } => "NonFinite",
+            Error::OutOfScale { .. } => "OutOfScale",
+            Error::Scene(_) => "Scene",
+            Error::Csv { .. } => "Csv",
+            Error::NoSolver { .. } => "NoSolver",
+            Error::EmptyPath { .. } => "EmptyPath",
+            Error::OutputPath { .. } => "OutputPath",
+            Error::TooManyPronyTerms { .. } => "TooManyPronyTerms",
+            Error::Unsupported(_) => "Unsupported",
+            Error::Parse { .. } => "Parse",
+            Error::NotSupported { .. } => "NotSupported",
+            Error::TooManyTerms { .. } => "TooManyTerms",
+            Error::InvalidBodies { .. } => "InvalidBodies",
+            Error::In { source, .. } => source.variant_name(),
+            Error::Internal(_) => "Internal",
+            Error::TooFewObservations { .. } => "TooFewObservations",
+            Error::ElasticData { .. } => "ElasticData",
+            Error::PartialNoise { .. } => "PartialNoise",
+            Error::FitFailed { .. } => "FitFailed",
+            Error::Io { .. } => "Io",
+        }
+    }
+
     /// The kind of this error; [`Error::In`] reports the kind of what it wraps. Exhaustive, so
     /// that a new variant must be classified here.
     pub fn kind(&self) -> ErrorKind {

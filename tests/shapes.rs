@@ -317,6 +317,17 @@ fn every_shape_scene_round_trips_through_to_toml() {
     }
 }
 
+/// The prescribed history of the `indent` checks: a triangle at 1 mm/s up to 1 ms.
+const INDENT: [&str; 7] = [
+    "indent",
+    "--history",
+    "triangle",
+    "--rate",
+    "1e-3",
+    "--peak-time",
+    "1e-3",
+];
+
 #[test]
 fn indent_takes_every_shape_and_a_scene_material() {
     // theory (Lee-Radok/Ting by quadrature) and the displacement-driven MDR agree on the force
@@ -348,17 +359,8 @@ fn indent_takes_every_shape_and_a_scene_material() {
         ),
     ] {
         let curve = |solver: &str| {
-            let mut args = vec![
-                "indent",
-                "--history",
-                "triangle",
-                "--rate",
-                "1e-3",
-                "--peak-time",
-                "1e-3",
-                "--solver",
-                solver,
-            ];
+            let mut args = INDENT.to_vec();
+            args.extend(["--solver", solver]);
             args.extend(&shape);
             args.extend(material);
             let o = common::run(&args, &dir);
@@ -387,50 +389,15 @@ fn indent_takes_every_shape_and_a_scene_material() {
         );
     }
     // a flag that does not apply, and the missing material
-    let o = common::run(
-        &[
-            "indent",
-            "--history",
-            "triangle",
-            "--rate",
-            "1e-3",
-            "--peak-time",
-            "1e-3",
-            "--shape",
-            "cone",
-            "--radius",
-            "1e-3",
-            "--g-inf",
-            "1e6",
-            "--g1",
-            "1e7",
-            "--eta",
-            "500",
-            "--nu",
-            "0.5",
-        ],
-        &dir,
-    );
+    let run_with = |extra: &[&str]| common::run(&[&INDENT[..], extra].concat(), &dir);
+    let o = run_with(&[&["--shape", "cone", "--radius", "1e-3"][..], &standard[..]].concat());
     assert!(!o.status.success());
     assert!(
         common::stderr(&o).contains("needs --half-angle"),
         "{}",
         common::stderr(&o)
     );
-    let o = common::run(
-        &[
-            "indent",
-            "--history",
-            "triangle",
-            "--rate",
-            "1e-3",
-            "--peak-time",
-            "1e-3",
-            "--radius",
-            "1e-3",
-        ],
-        &dir,
-    );
+    let o = run_with(&["--radius", "1e-3"]);
     assert!(
         common::stderr(&o).contains("missing --g-inf"),
         "{}",

@@ -149,42 +149,6 @@ pub enum SolveResult {
     Panicked(String),
 }
 
-/// The variant name of an error (of the error it wraps, for [`Error::In`]): the category names
-/// of the stress section. Exhaustive, so a new variant must be named here.
-pub fn error_kind(e: &Error) -> &'static str {
-    match e {
-        Error::OutOfRange { .. } => "OutOfRange",
-        Error::PronyTerm { .. } => "PronyTerm",
-        Error::UnstableStep { .. } => "UnstableStep",
-        Error::WorkLimit { .. } => "WorkLimit",
-        Error::NotAsymptotic { .. } => "NotAsymptotic",
-        Error::StepSizeTooSmall { .. } => "StepSizeTooSmall",
-        Error::AccuracyNotReached { .. } => "AccuracyNotReached",
-        Error::NoConvergence { .. } => "NoConvergence",
-        Error::Quadrature { .. } => "Quadrature",
-        Error::NonFinite { .. } => "NonFinite",
-        Error::OutOfScale { .. } => "OutOfScale",
-        Error::Scene(_) => "Scene",
-        Error::Csv { .. } => "Csv",
-        Error::NoSolver { .. } => "NoSolver",
-        Error::EmptyPath { .. } => "EmptyPath",
-        Error::OutputPath { .. } => "OutputPath",
-        Error::TooManyPronyTerms { .. } => "TooManyPronyTerms",
-        Error::Unsupported(_) => "Unsupported",
-        Error::Parse { .. } => "Parse",
-        Error::NotSupported { .. } => "NotSupported",
-        Error::TooManyTerms { .. } => "TooManyTerms",
-        Error::InvalidBodies { .. } => "InvalidBodies",
-        Error::In { source, .. } => error_kind(source),
-        Error::Internal(_) => "Internal",
-        Error::TooFewObservations { .. } => "TooFewObservations",
-        Error::ElasticData { .. } => "ElasticData",
-        Error::PartialNoise { .. } => "PartialNoise",
-        Error::FitFailed { .. } => "FitFailed",
-        Error::Io { .. } => "Io",
-    }
-}
-
 fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
     if let Some(s) = payload.downcast_ref::<&str>() {
         (*s).to_string()
@@ -211,7 +175,7 @@ pub fn solve_one(row: &Row, solver: SolverKind, rtol: f64) -> SolveResult {
     match catch_unwind(AssertUnwindSafe(run)) {
         Err(payload) => SolveResult::Panicked(panic_message(payload.as_ref())),
         Ok(Err(e)) => SolveResult::Refused {
-            kind: error_kind(&e),
+            kind: e.variant_name(),
             message: e.to_string(),
         },
         Ok(Ok(o)) => {

@@ -72,7 +72,7 @@ pub(super) fn compress<const K: usize>(
     let mut steps = 0u64;
     let mut err_sum = 0.0;
     // glassy Hertz time of maximum indentation as the first length scale
-    let d0 = match &s.geom {
+    let d0 = match &s.shape.geom {
         None => (1.25 / (K16 * s.glassy)).powf(0.4),
         Some(g) => g.elastic_max_indentation(s.glassy),
     };
@@ -139,7 +139,7 @@ pub(super) fn compress<const K: usize>(
             sk = end.s;
             f_n = out.f[S - 1];
             if let Some(hh) = hist.as_mut() {
-                hh.push(t, d, v, f_n, s.radius_at(d));
+                hh.push(t, d, v, f_n, s.shape.radius_at(d));
             }
             kind = Kind::Regular;
             h_full = h;
@@ -190,7 +190,7 @@ pub(super) fn compress<const K: usize>(
         f_m = s.force_comp(&pt);
         peak.push(t_m, f_m);
         if let Some(hh) = hist.as_mut() {
-            hh.push(t_m, d_m, v_m, f_m, s.radius_at(d_m));
+            hh.push(t_m, d_m, v_m, f_m, s.shape.radius_at(d_m));
         }
         // restitution starts with the length of the last full compression step, shortened
         // for the relaxation layers after the turn
@@ -237,7 +237,7 @@ impl<const K: usize> Solver<K> {
     /// `w` and `d^(3/2)` times `geff` ([`Solver::effective_modulus`]).
     pub(super) fn comp_defect(&self, seg: &Seg<K>, th: f64, geff: f64) -> f64 {
         let pt = self.eval_seg(seg, th, true);
-        (pt.dd + self.force_comp(&pt)).abs() + K16 * geff * (self.w(pt.d) - pt.w).abs()
+        (pt.dd + self.force_comp(&pt)).abs() + K16 * geff * (self.shape.w(pt.d) - pt.w).abs()
     }
 
     pub(super) fn force_comp(&self, pt: &Pt<K>) -> f64 {
@@ -266,8 +266,8 @@ impl<const K: usize> Solver<K> {
         let c = self.tab.c;
         let vh = vn * h;
         let wfix = match kind {
-            Kind::Regular => self.w(dn),
-            Kind::First => self.w(vh),
+            Kind::Regular => self.shape.w(dn),
+            Kind::First => self.shape.w(vh),
         };
         let mut dfix = [0.0; S];
         let mut wfix_n = [0.0; S];
@@ -328,7 +328,7 @@ impl<const K: usize> Solver<K> {
         }
         // unknowns: the increments z_i = d(t_n + c_i h) - dfix_i (no cancellation for small h)
         let regular = kind == Kind::Regular;
-        let shape = ShapeFns { geom: self.geom };
+        let shape = self.shape;
         let forces = |z: &[f64; S]| {
             let mut dw = [0.0; S]; // W_i - wfix_i
             let mut w = [0.0; S];
@@ -368,7 +368,7 @@ impl<const K: usize> Solver<K> {
                 r[i] = -(z[i] + h2 * af[i]);
             }
             // dW_j/dD_j = (3/2) a(D_j) (sqrt(D_j) for the paraboloid)
-            let dw: [f64; S] = std::array::from_fn(|j| self.w_slope(dfix[j] + z[j]));
+            let dw: [f64; S] = std::array::from_fn(|j| self.shape.w_slope(dfix[j] + z[j]));
             let mut jf = [[0.0; S]; S];
             for i in 0..S {
                 for j in 0..S {
@@ -392,9 +392,9 @@ impl<const K: usize> Solver<K> {
             for i in 0..S {
                 dmin = dmin.min(dfix[i] + z[i]);
             }
-            let curv = match self.geom {
+            let curv = match self.shape.geom {
                 None => 0.5 * h2 * 0.75 * K16 * g_step / dmin.max(0.0).sqrt(),
-                Some(_) => 0.5 * h2 * 1.5 * self.radius_slope(dmin) * K16 * g_step,
+                Some(_) => 0.5 * h2 * 1.5 * self.shape.radius_slope(dmin) * K16 * g_step,
             };
             if newton_done(dmax, scale, prev, self.rtol)
                 || quadratic_done(dmax, scale, curv, self.rtol)
@@ -406,10 +406,13 @@ impl<const K: usize> Solver<K> {
                         &m,
                         self.c_inf,
                         (&dfix, &z),
-                        self.geom
+                        self.shape
+                            .geom
                             .is_some()
                             .then(|| {
-                                std::array::from_fn(|j| 1.5 * self.radius_slope(dfix[j] + z[j]))
+                                std::array::from_fn(|j| {
+                                    1.5 * self.shape.radius_slope(dfix[j] + z[j])
+                                })
                             })
                             .as_ref(),
                         &delta,
@@ -472,7 +475,7 @@ impl<const K: usize> Solver<K> {
         }
         let mut a = [0.0; S];
         for i in 0..S {
-            a[i] = self.radius_at(dfix[i] + z[i]);
+            a[i] = self.shape.radius_at(dfix[i] + z[i]);
         }
         // step end from the last node (θ = 1: every power of θ is 1)
         let mut end = Pt {

@@ -334,7 +334,7 @@ impl<const K: usize> Solver<K> {
                 d,
                 v: v * inv_h,
                 dd: 0.0,
-                w: self.w(d),
+                w: self.shape.w(d),
                 q,
                 s,
             };
@@ -364,7 +364,7 @@ impl<const K: usize> Solver<K> {
             d,
             v,
             dd: 0.0,
-            w: self.w(d),
+            w: self.shape.w(d),
             q,
             s,
         }

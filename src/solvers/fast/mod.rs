@@ -272,9 +272,9 @@ const K16: f64 = 16.0 / 3.0;
 
 struct Solver<const K: usize> {
     rtol: f64,
-    /// The indenter (canonical, [`crate::model::geometry`]); `None` for the unit paraboloid,
-    /// whose `w = d^(3/2)` has the closed forms of `dense` (bit for bit the solver it was).
-    geom: Option<Geometry>,
+    /// The indenter's functions ([`ShapeFns`]; the unit paraboloid's closed forms when its
+    /// geometry is `None`).
+    shape: ShapeFns,
     /// Smallest energy scale of the step tolerance ([`FAST_MIN_TOL_SCALE`], lowered for a
     /// CoR below it: see [`impact`]).
     min_tol_scale: f64,
@@ -307,7 +307,8 @@ struct Solver<const K: usize> {
 /// The indenter's functions as the steps use them (a copy, free of the solver's borrows).
 #[derive(Debug, Clone, Copy)]
 struct ShapeFns {
-    /// `None`: the unit paraboloid.
+    /// The indenter (canonical, [`crate::model::geometry`]); `None` for the unit paraboloid,
+    /// whose `w = d^(3/2)` has the closed forms of `dense` (bit for bit the solver it was).
     geom: Option<Geometry>,
 }
 
@@ -397,27 +398,6 @@ struct StepOut<const K: usize> {
 }
 
 impl<const K: usize> Solver<K> {
-    /// The force function `w(d)` ([`ShapeFns::w`]).
-    #[inline]
-    fn w(&self, d: f64) -> f64 {
-        ShapeFns { geom: self.geom }.w(d)
-    }
-    /// `w'(d) = (3/2) a(d)`.
-    #[inline]
-    fn w_slope(&self, d: f64) -> f64 {
-        ShapeFns { geom: self.geom }.w_slope(d)
-    }
-    /// The contact radius `a(d)`.
-    #[inline]
-    fn radius_at(&self, d: f64) -> f64 {
-        ShapeFns { geom: self.geom }.radius_at(d)
-    }
-    /// `a'(d)` ([`ShapeFns::radius_slope`]).
-    #[inline]
-    fn radius_slope(&self, d: f64) -> f64 {
-        ShapeFns { geom: self.geom }.radius_slope(d)
-    }
-
     /// Relative truncation of the kernel series ([`FAST_SERIES_LEVEL`] of `rtol`).
     fn series_tol(&self) -> f64 {
         (FAST_SERIES_LEVEL * self.rtol).max(1e-17)
@@ -617,7 +597,7 @@ fn solve_terms<const K: usize>(
     let glassy = c_inf + c[..k].iter().sum::<f64>();
     let mut s = Solver {
         rtol,
-        geom,
+        shape: ShapeFns { geom },
         min_tol_scale: FAST_MIN_TOL_SCALE,
         accept_step: 0.0,
         root_force_tol: 0.0,

@@ -278,7 +278,7 @@ pub(super) fn restitute<const K: usize>(
         max_indentation: d_m,
         time_of_max_indentation: t_m,
         max_force,
-        max_contact_radius: s.radius_at(d_m),
+        max_contact_radius: s.shape.radius_at(d_m),
         dissipated_energy: 0.5 * (1.0 - cor * cor),
         cor_error_estimate: Some(err_sum / cor.abs().max(f64::MIN_POSITIVE)),
         history: hist,
@@ -403,7 +403,7 @@ impl<const K: usize> Solver<K> {
             let mut jf = [[0.0; S]; S];
             for i in 0..S {
                 if t1[i] > 0.0 {
-                    let g = K16 * self.w_slope(d1[i]);
+                    let g = K16 * self.shape.w_slope(d1[i]);
                     for j in 0..S {
                         jf[i][j] = g * (cn[i][j] + if i == j { self.c_inf } else { 0.0 });
                     }
@@ -443,10 +443,10 @@ impl<const K: usize> Solver<K> {
                     psi += cn[i][j] * delta[j];
                 }
                 t1[i] = r.t1 + psi / (r.v1 * r.g);
-                rem_f[i] = match self.geom {
+                rem_f[i] = match self.shape.geom {
                     None => 2.0 * psi * psi / (r.d1.sqrt() * r.g),
                     // d²F/dψ² = 8 a'(d(t_1)) / G_eq (the paraboloid's 4 / (sqrt(d) G_eq))
-                    Some(_) => 4.0 * self.radius_slope(r.d1) * psi * psi / r.g,
+                    Some(_) => 4.0 * self.shape.radius_slope(r.d1) * psi * psi / r.g,
                 };
             }
             let rem = rem_f.iter().fold(0.0, |acc: f64, &x| acc.max(x));
@@ -508,7 +508,7 @@ impl<const K: usize> Solver<K> {
         }
         let mut a = [0.0; S];
         for i in 0..S {
-            a[i] = self.radius_at(d1[i]);
+            a[i] = self.shape.radius_at(d1[i]);
         }
         // step end from the last node (θ = 1)
         let mut end = Pt {

@@ -74,9 +74,9 @@ impl<const K: usize> Solver<K> {
                 return Ok(root(x, K16 * f, pt.d));
             }
             // d²F/dφ² = 8 a'(d(t_1)) / G_eq: 4 / (sqrt(d) G_eq) for the paraboloid
-            let sd = match self.geom {
+            let sd = match self.shape.geom {
                 None => pt.d.max(0.0).sqrt(),
-                Some(_) => 0.5 / self.radius_slope(pt.d),
+                Some(_) => 0.5 / self.shape.radius_slope(pt.d),
             };
             // Accept the Newton point when it is close (`accept_step`), or when the force
             // there, moved to first order, is exact to FAST_ROOT_LEVEL rtol relative or to
@@ -91,7 +91,7 @@ impl<const K: usize> Solver<K> {
                 // quadratic convergence: the Newton point is exact to ~step^2; move F and d
                 // there to first order (dF/dt_1 = (16/3) G_eq(t - t_1) w'(t_1))
                 let dx = newton - x;
-                let df = K16 * self.w_slope(pt.d) * pt.v * g;
+                let df = K16 * self.shape.w_slope(pt.d) * pt.v * g;
                 return Ok(root(newton, K16 * f + df * dx, pt.d + pt.v * dx));
             }
             x = if newton > lo && newton < hi {
