@@ -6,9 +6,10 @@ use std::path::Path;
 use mdr_impact::apps::{batch, curve, dem, dma, fit, indent, sweep};
 use mdr_impact::error::escape_text;
 use mdr_impact::io::run_files::RunFiles;
-use mdr_impact::io::{output, scene::Scene};
+use mdr_impact::io::{oblique as oblique_out, output, scene::Scene};
 use mdr_impact::model::geometry::{Shape, ShapeKeys};
 use mdr_impact::report::{bench, figures, sections, stress, validate};
+use mdr_impact::solvers::oblique::solve_oblique;
 use mdr_impact::{solve, Error, Groups, Impact, Material, SolveOptions};
 
 use super::args::*;
@@ -60,13 +61,20 @@ fn cmd_run(RunArgs { scene, json, out }: RunArgs) -> Outcome {
     };
     scene.options.history = files.any();
     let what = format!("solving ({})", scene.options.solver.name());
-    let outcome = with_spinner(&what, || solve(&scene.impact, &scene.options))?;
+    let (ob, opts) = (&scene.oblique, &scene.options);
+    let oo = with_spinner(&what, || solve_oblique(&scene.impact, ob, opts))?;
+    let outcome = &oo.normal;
     // rendered first and written together: a failure leaves none of them
-    output::write_outputs(&files.render(&name, &scene.impact, &outcome)?)?;
+    let mut rendered = files.render(&name, &scene.impact, outcome)?;
+    if oblique_out::reports_tangential(ob) {
+        let path = files.history.as_ref().map(|(_, p)| p.as_path());
+        oblique_out::with_tangential_history(&mut rendered, path, &oo);
+    }
+    output::write_outputs(&rendered)?;
     if json {
         println!(
             "{}",
-            output::impact_json(&scene.impact, &scene.options, &outcome)
+            oblique_out::oblique_json(&scene.impact, opts, ob, &oo)
         );
     } else {
         for (table, log10_a) in &scene.shifts {
@@ -83,7 +91,7 @@ fn cmd_run(RunArgs { scene, json, out }: RunArgs) -> Outcome {
         }
         print!(
             "{}",
-            output::summary(&scene.impact, &scene.options, &outcome)
+            oblique_out::oblique_summary(&scene.impact, opts, ob, &oo)
         );
     }
     // with --json, stdout holds the JSON object alone; notes go to stderr

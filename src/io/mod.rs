@@ -2,6 +2,7 @@
 //! and SVG charts of plain series.
 
 pub mod lines;
+pub mod oblique;
 pub mod output;
 pub mod plot;
 pub mod prony_table;

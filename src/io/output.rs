@@ -455,6 +455,11 @@ pub fn impact_json(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> String 
     impact_value(impact, opts, o, true).to_string()
 }
 
+/// The object of [`impact_json`] (for callers that add keys to it).
+pub fn impact_value_of(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> serde_json::Value {
+    impact_value(impact, opts, o, true)
+}
+
 /// The object of [`impact_json`]; `warnings` with the plausibility warnings of the inputs
 /// ([`plausibility::warnings`]) first when `check_inputs` (not for canonical units, where a
 /// sphere of `m = R = 1` has no plausible density).

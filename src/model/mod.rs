@@ -9,6 +9,7 @@ pub mod geometry;
 pub mod hertz;
 pub mod impact;
 pub mod material;
+pub mod oblique;
 pub mod plausibility;
 pub mod tolerances;
 pub mod validity;

@@ -16,6 +16,7 @@ mod dispatch;
 pub mod fast;
 pub mod indentation;
 pub mod mdr;
+pub mod oblique;
 pub mod theory;
 
 pub use api::{ImpactSolver, Resolution, SolveOptions, SolverKind};

@@ -54,6 +54,7 @@ use crate::model::geometry::{Cap, Shape, ShapeKeys};
 use crate::model::impact::{Impact, Sphere};
 use crate::model::material::shift::ShiftLaw;
 use crate::model::material::Material;
+use crate::model::oblique::{inertia_factor, Oblique, SOLID_SPHERE};
 use crate::solvers::{Resolution, SolveOptions, SolverKind};
 
 mod series;
@@ -71,6 +72,7 @@ struct RawScene {
     impact: RawImpact,
     material: Option<RawMaterial>,
     body: Option<Vec<RawBody>>,
+    friction: Option<RawFriction>,
     #[serde(default)]
     solver: RawSolver,
     #[serde(default)]
@@ -84,6 +86,15 @@ struct RawSphere {
     radius: f64,
     /// `paraboloid` (Hertz, the default) or `sphere` (the exact cap).
     profile: Option<String>,
+    /// `I = inertia_factor m R^2` (default 0.4, a solid sphere).
+    inertia_factor: Option<f64>,
+}
+
+/// `[friction]`: the Coulomb coefficient of the contact (default 0: frictionless).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawFriction {
+    coefficient: f64,
 }
 
 /// `[indenter]`: a rigid impactor of any axisymmetric shape (docs/theory.md §11).
@@ -110,12 +121,18 @@ struct RawBody {
     profile: Option<String>,
     rigid: Option<bool>,
     material: Option<RawMaterial>,
+    /// `I = inertia_factor m R^2` (default 0.4, a solid sphere).
+    inertia_factor: Option<f64>,
 }
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawImpact {
     velocity: f64,
+    /// Tangential velocity of the centre before contact (m/s, default 0).
+    tangential_velocity: Option<f64>,
+    /// Spin before contact (rad/s, default 0; docs/theory.md §13 for the sign).
+    spin: Option<f64>,
     /// Temperature (°C) at which the materials' `[material.shift]` laws are evaluated.
     temperature: Option<f64>,
 }
@@ -197,6 +214,9 @@ pub struct Scene {
     /// The shift factor `log10 a_T` applied to each material with a `[material.shift]` law at
     /// the scene's temperature (its `t_ref` when none is given), with the table it belongs to.
     pub shifts: Vec<(String, f64)>,
+    /// The tangential inputs (`[friction]`, `[impact] tangential_velocity` and `spin`, the
+    /// inertia factors); the default is a frictionless, normal impact.
+    pub oblique: Oblique,
 }
 
 impl Scene {
@@ -284,6 +304,7 @@ impl Scene {
                      so its relaxation times at another temperature are unknown"
             )));
         }
+        let oblique = oblique_of(&raw)?;
         let mut options = SolveOptions::default();
         if let Some(name) = &raw.solver.name {
             options.solver = name.parse::<SolverKind>().map_err(|_| {
@@ -326,6 +347,7 @@ impl Scene {
             plot,
             temperature,
             shifts,
+            oblique,
         })
     }
 
@@ -352,6 +374,37 @@ impl Scene {
     pub fn default_scene() -> Self {
         Self::parse(DEFAULT_SCENE).expect("the embedded default scene is valid")
     }
+}
+
+/// The tangential inputs of a scene (docs/theory.md §13); errors name the table.
+fn oblique_of(raw: &RawScene) -> Result<Oblique> {
+    let inertia = |table: &str, k: Option<f64>| -> Result<f64> {
+        inertia_factor("inertia_factor", k.unwrap_or(SOLID_SPHERE))
+            .map_err(|e| Error::Scene(format!("{table}: {e}")))
+    };
+    let (ka, kb) = match (&raw.body, &raw.sphere) {
+        (Some(b), _) if b.len() == 2 => (
+            inertia(body_name(Side::A), b[0].inertia_factor)?,
+            inertia(body_name(Side::B), b[1].inertia_factor)?,
+        ),
+        (_, Some(s)) => (inertia("[sphere]", s.inertia_factor)?, SOLID_SPHERE),
+        _ => (SOLID_SPHERE, SOLID_SPHERE),
+    };
+    let mu = raw.friction.as_ref().map_or(0.0, |f| f.coefficient);
+    Oblique::new(
+        mu,
+        raw.impact.tangential_velocity.unwrap_or(0.0),
+        raw.impact.spin.unwrap_or(0.0),
+        ka,
+        kb,
+    )
+    .map_err(|e| match &e {
+        Error::OutOfRange { field, .. } if *field == "coefficient" => {
+            Error::Scene(format!("[friction]: {e}"))
+        }
+        Error::OutOfRange { .. } => Error::Scene(format!("[impact]: {e}")),
+        _ => e,
+    })
 }
 
 /// The impact of a one-sphere scene: the standard solid of `[material]` (`g_inf`, `g_1`,

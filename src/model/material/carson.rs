@@ -133,6 +133,82 @@ pub fn equivalent_relaxation(material: &Material) -> Result<Prony> {
     })
 }
 
+/// The tangential relaxation function of the MDR's tangential foundation (docs/theory.md §13),
+/// `G_t(t) / 4` as an exact Prony series (Pa, s), where in Carson transforms
+///
+/// ```text
+/// G_t(s) = (8/3) G (3K + G) / (3K + 2G),      G_t / 4 = G / 3 + G K / (3K + 2G)
+/// ```
+///
+/// is the tangential stiffness per unit length of the 1D foundation (`G* = 4G / (2 - nu)` of
+/// an elastic solid; `8G/3` when incompressible). The quarter matches [`equivalent_relaxation`]
+/// (`G_eq = E* / 4`), so that an element's tangential force is `8 dx` times the hereditary
+/// response of `G_t / 4`, as its normal force is of `G_eq`.
+///
+/// The composition is `H = P Q / (alpha P + beta Q)` of the module docs with `P = G`, `Q = K`,
+/// `(alpha, beta) = (2, 3)`: a time of `G` alone keeps `g / 3`, a time of `K` alone cancels, a
+/// shared time keeps the elastic formula on its term, and every zero of `2G + 3K` is a new
+/// time with a non-negative coefficient (the argument of the module docs with `(2, 3)`).
+///
+/// ```
+/// # use mdr_impact::model::material::{carson, Material};
+/// let m = Material::with_poisson(1.0, 100.0, 1.0, 0.3).unwrap();
+/// let gt = carson::tangential_relaxation(&m).unwrap();
+/// // relaxed: G* / 4 = G / (2 - nu)
+/// assert!((gt.relaxed - 1.0 / 1.7).abs() < 1e-12);
+/// ```
+pub fn tangential_relaxation(material: &Material) -> Result<Prony> {
+    let shear = material.shear();
+    let g_inf = shear.g_inf();
+    let (k_inf, bulk_terms): (f64, &[(f64, f64)]) = match material.bulk() {
+        BulkRheology::Incompressible => {
+            return Ok(Prony {
+                relaxed: 2.0 / 3.0 * g_inf,
+                terms: shear
+                    .terms()
+                    .iter()
+                    .map(|&(g, tau)| PronyTerm {
+                        coefficient: 2.0 / 3.0 * g,
+                        tau,
+                    })
+                    .collect(),
+            });
+        }
+        BulkRheology::Elastic(k) => (*k, &[]),
+        BulkRheology::Prony(p) => (p.k_inf(), p.terms()),
+    };
+    let elastic = |g: f64, k: f64| 2.0 / 3.0 * g * (3.0 * k + g) / (3.0 * k + 2.0 * g);
+    let relaxed = elastic(g_inf, k_inf);
+    let poles = merge(shear.terms(), bulk_terms);
+    let mut terms: Vec<(f64, f64)> = Vec::with_capacity(2 * poles.len());
+    for p in &poles {
+        if p.g > 0.0 {
+            let c = if p.k > 0.0 {
+                elastic(p.g, p.k)
+            } else {
+                p.g / 3.0
+            };
+            terms.push((p.tau, c));
+        }
+    }
+    let ctx = Context {
+        poles: &poles,
+        g_inf,
+        k_inf,
+        alpha: 2.0,
+        beta: 3.0,
+        d0: 2.0 * g_inf + 3.0 * k_inf,
+    };
+    for m in 0..poles.len() {
+        let zero = ctx.zero_after(m)?;
+        terms.push((zero.tau, zero.coefficient));
+    }
+    Ok(Prony {
+        relaxed,
+        terms: collect_terms(terms),
+    })
+}
+
 /// Two bodies in contact (docs/theory.md §8): the combined relaxation function `G_tot(t)` with
 /// `1 / G_tot(s) = 1 / G_A(s) + 1 / G_B(s)` in Carson transforms (compliances add, as for `E*`),
 /// as an exact Prony series; `a` and `b` are the equivalent relaxation functions `G_eq` of the two

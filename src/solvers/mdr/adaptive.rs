@@ -147,7 +147,7 @@ pub fn run_resolution(
 /// against the impact the force density jumps at the contact edge and the element sum converges
 /// at first order only). When the last two differences are both below `tiny` / 100 the
 /// sequence is at round-off and the larger of them is the estimate.
-fn accept(deltas: &[f64], p_max: f64, tiny: f64) -> Option<f64> {
+pub(super) fn accept(deltas: &[f64], p_max: f64, tiny: f64) -> Option<f64> {
     let n = deltas.len();
     if n >= 2 && deltas[n - 1].abs().max(deltas[n - 2].abs()) <= 0.01 * tiny {
         return Some(deltas[n - 1].abs().max(deltas[n - 2].abs()));

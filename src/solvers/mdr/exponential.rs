@@ -158,6 +158,16 @@ impl ExpFoundation {
         Some(f)
     }
 
+    /// Force of element `i` (per `8 dx` and relative width) at depth `d` with the current states.
+    pub(crate) fn element_force(&self, i: usize, d: f64) -> f64 {
+        let k_n = self.coef.len();
+        let mut f = self.c_inf * (d - self.geom.g(i));
+        for k in 0..k_n {
+            f += self.coef[k] * self.h[i * k_n + k];
+        }
+        f
+    }
+
     /// Force of the outermost element (per `8 dx`) at depth `d` with the current states.
     pub(crate) fn outer_force_start(&self, d: f64) -> f64 {
         let i = self.n - 1;

@@ -21,8 +21,10 @@ pub(crate) mod euler;
 pub(crate) mod exponential;
 pub mod indent;
 
+use adaptive::accept;
 pub use adaptive::{euler_step_bound, pilot, pilot_material, run_resolution, solve_rtol};
 pub(crate) mod network;
+pub mod oblique;
 
 use crate::error::{Error, Result};
 pub use crate::model::contact::Network;
@@ -283,6 +285,9 @@ pub(crate) trait Stepper {
     fn geometry(&self) -> &Foundation;
     /// `(maximum elements in contact, element updates)`.
     fn counters(&self) -> (usize, u64);
+    /// Normal force of element `i < in_contact()` (per `8 dx` and relative width) at depth `d`
+    /// with the current states.
+    fn element_force(&self, i: usize, d: f64) -> f64;
 }
 
 impl Stepper for ExpFoundation {
@@ -321,6 +326,9 @@ impl Stepper for ExpFoundation {
     }
     fn counters(&self) -> (usize, u64) {
         (self.max_elements, self.element_updates)
+    }
+    fn element_force(&self, i: usize, d: f64) -> f64 {
+        ExpFoundation::element_force(self, i, d)
     }
 }
 
@@ -465,7 +473,13 @@ fn run_exponential_on(
     history: bool,
 ) -> Result<Outcome> {
     let geom = Foundation::new(grid.dx, geometry, capacity);
-    run_stepper(ExpFoundation::new(geom, prony), grid, capacity, history)
+    run_stepper(
+        ExpFoundation::new(geom, prony),
+        grid,
+        capacity,
+        history,
+        &mut |_: &ExpFoundation, _: f64, _: f64| Ok(()),
+    )
 }
 
 /// Run one impact with the exponential scheme on the element network of a general material
@@ -492,15 +506,18 @@ fn run_network_on<N: ElementModel>(
         grid,
         capacity,
         history,
+        &mut |_: &NetFoundation<N>, _: f64, _: f64| Ok(()),
     )
 }
 
-/// The exponential scheme's time loop over a foundation.
+/// The exponential scheme's time loop over a foundation; `observe(f, dt, d)` sees the
+/// foundation at the end of every step (step size `dt`, depth `d`) and never changes it.
 fn run_stepper<F: Stepper>(
     mut f: F,
     grid: &Grid,
     capacity: usize,
     history: bool,
+    observe: &mut dyn FnMut(&F, f64, f64) -> Result<()>,
 ) -> Result<Outcome> {
     let (mut t, mut d, mut v, mut force) = (0.0_f64, 0.0_f64, 1.0_f64, 0.0_f64);
     let mut hist = start_history(history);
@@ -561,6 +578,7 @@ fn run_stepper<F: Stepper>(
         d = d1;
         v = v1;
         force = f1;
+        observe(&f, dt, d)?;
         tr.sample_force(t, force);
         if let Some(h) = hist.as_mut() {
             h.push(t, d, v, force, f.geometry().radius_of(f.in_contact()));

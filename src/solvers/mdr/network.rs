@@ -193,4 +193,9 @@ impl<N: ElementModel> Stepper for NetFoundation<N> {
     fn counters(&self) -> (usize, u64) {
         (self.max_elements, self.element_updates)
     }
+
+    fn element_force(&self, i: usize, _d: f64) -> f64 {
+        self.net
+            .force(&self.state[i * self.len..(i + 1) * self.len])
+    }
 }

@@ -28,6 +28,7 @@ pub mod asymptotes;
 pub mod bromwich;
 pub mod files;
 pub use crate::model::material::poles;
+pub mod oblique;
 pub mod reference;
 pub mod viscoelastic;
 

@@ -576,6 +576,23 @@ pub fn impact_at(prony: &Prony, rtol: f64, times: &[f64]) -> Result<Outcome> {
     )
 }
 
+/// As [`impact_at`], for the indenter `geometry` ([`impact_on`]).
+pub fn impact_at_on(
+    geometry: Geometry,
+    prony: &Prony,
+    rtol: f64,
+    times: &[f64],
+) -> Result<Outcome> {
+    if times.is_empty() || times.windows(2).any(|w| !(w[1] >= w[0])) || !(times[0] >= 0.0) {
+        return Err(Error::OutOfRange {
+            field: "sample times",
+            value: times.first().copied().unwrap_or(f64::NAN),
+            allowed: "a non-empty ascending list of times >= 0",
+        });
+    }
+    solve(geometry, prony, rtol, Sampling::Times(times.to_vec()), 0)
+}
+
 fn solve(
     geom: Geometry,
     prony: &Prony,
