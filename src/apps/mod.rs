@@ -6,6 +6,7 @@
 
 pub mod batch;
 pub mod curve;
+pub mod curve_angle;
 pub mod curve_temperature;
 pub mod dem;
 pub mod dma;

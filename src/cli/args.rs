@@ -26,7 +26,9 @@ pub enum Command {
     /// Run a scene (the embedded default when none is given) and print the outcome with units.
     Run(RunArgs),
     /// CoR against impact velocity: the scene's impact (the embedded default when none is
-    /// given) at N velocities; writes DIR/curve.csv and DIR/curve.svg.
+    /// given) at N velocities; writes DIR/curve.csv and DIR/curve.svg. With --angle and
+    /// --speed: the oblique impact at N incidence angles (DIR/curve.csv,
+    /// DIR/tangential_cor.svg, DIR/rebound_angle.svg).
     Curve(CurveArgs),
     /// Parameters for DEM codes: the scene's e(v0) (the embedded default when none is given),
     /// the constant-CoR and viscoelastic damping laws fitted to it with their errors, and the
@@ -143,9 +145,17 @@ pub struct CurveArgs {
     #[arg(
         long,
         allow_hyphen_values = true,
-        required_unless_present = "temperature"
+        required_unless_present_any = ["temperature", "angle"]
     )]
     pub v0: Option<String>,
+    /// Incidence angles MIN:MAX:N in degrees from the normal (0 <= MIN < MAX < 90,
+    /// 2 <= N <= 10000) at the speed --speed; the scene's [friction], spin and inertia
+    /// factors are kept. Not together with --v0 or --temperature.
+    #[arg(long, conflicts_with_all = ["v0", "temperature", "log"], requires = "speed")]
+    pub angle: Option<String>,
+    /// Impact speed (m/s) of an --angle curve.
+    #[arg(long, requires = "angle", allow_hyphen_values = true)]
+    pub speed: Option<f64>,
     /// Temperatures MIN:MAX:N in °C at the scene's velocity instead of velocities (the
     /// scene's materials need a [material.shift] law); not together with --v0.
     #[arg(long, allow_hyphen_values = true, conflicts_with_all = ["v0", "log"])]

@@ -121,10 +121,15 @@ fn cmd_curve(
         scene,
         v0,
         temperature,
+        angle,
+        speed,
         log,
         out,
     }: CurveArgs,
 ) -> Outcome {
+    if let (Some(a), Some(v)) = (angle, speed) {
+        return cmd_curve_angle(scene.as_deref(), &a, v, &out);
+    }
     if let Some(t) = temperature {
         return cmd_curve_temperature(scene.as_deref(), &t, &out);
     }
@@ -139,6 +144,29 @@ fn cmd_curve(
     })?;
     let written = curve::write_outputs(&out, &c, log, &name)?;
     print!("{}", curve::summary(&c, Some(&written)));
+    Ok(())
+}
+
+/// `curve --angle --speed`: the scene's oblique impact over incidence angles.
+fn cmd_curve_angle(scene: Option<&Path>, spec: &str, speed: f64, out: &Path) -> Outcome {
+    use mdr_impact::apps::curve_angle as ca;
+    let range = ca::AngleRange::parse(spec)?;
+    ca::check_speed(speed)?;
+    let name = scene_name(scene);
+    let scene = scene_or_default(scene)?;
+    let rows = with_progress(range.n as u64, "curve", |tick| {
+        ca::run(
+            &scene.impact,
+            &scene.oblique,
+            &scene.options,
+            &range,
+            speed,
+            tick,
+        )
+    })?;
+    for path in ca::write_outputs(out, &rows, &name)? {
+        println!("{:<28}{}", "written", path.display());
+    }
     Ok(())
 }
 

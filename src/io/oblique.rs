@@ -1,4 +1,4 @@
-//! The outputs of oblique impacts (docs/theory.md §13): the summary lines, the JSON keys and
+//! The outputs of oblique impacts (docs/theory.md §14): the summary lines, the JSON keys and
 //! the history CSV with the tangential columns.
 //!
 //! JSON keys (SI; added when the scene has a tangential velocity, a spin or friction):

@@ -1,4 +1,4 @@
-//! Oblique impacts (docs/theory.md §13): Coulomb friction, the tangential velocity and the spin
+//! Oblique impacts (docs/theory.md §14): Coulomb friction, the tangential velocity and the spin
 //! of the impactor, and what the tangential problem needs from the model.
 //!
 //! # Sign conventions

@@ -69,3 +69,11 @@ pub const FIT_LM_STARTS: usize = 2;
 pub const FIT_PROFILE_STEP: f64 = std::f64::consts::LN_10 / 4.0;
 /// `fit`: steps of the profile likelihood on each side (four decades).
 pub const FIT_PROFILE_STEPS: usize = 16;
+
+/// Absolute accuracy floor of the tangential CoR of an oblique `mdr` run: the adaptive driver
+/// accepts `v_c' / v_c` at `max(rtol, OBLIQUE_TANGENTIAL_ATOL)` (absolute; the normal CoR keeps
+/// `rtol`). The tangential foundation converges at first order in the resolution (the slip
+/// front crosses an element inside a step, where the exponential update assumes a linear
+/// displacement), so each level halves its error at four times the work; the estimate is
+/// reported (`tangential_error_estimate`).
+pub const OBLIQUE_TANGENTIAL_ATOL: f64 = 1e-4;

@@ -1,4 +1,4 @@
-//! The one entry point of oblique impacts ([`solve_oblique`], docs/theory.md §13): the normal
+//! The one entry point of oblique impacts ([`solve_oblique`], docs/theory.md §14): the normal
 //! impact as [`crate::solvers::solve`] answers it, and the tangential problem on top.
 //!
 //! - no friction, or neither tangential velocity nor spin: the normal impact of [`solve`] (bit

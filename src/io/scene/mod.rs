@@ -131,7 +131,7 @@ struct RawImpact {
     velocity: f64,
     /// Tangential velocity of the centre before contact (m/s, default 0).
     tangential_velocity: Option<f64>,
-    /// Spin before contact (rad/s, default 0; docs/theory.md §13 for the sign).
+    /// Spin before contact (rad/s, default 0; docs/theory.md §14 for the sign).
     spin: Option<f64>,
     /// Temperature (°C) at which the materials' `[material.shift]` laws are evaluated.
     temperature: Option<f64>,
@@ -376,7 +376,7 @@ impl Scene {
     }
 }
 
-/// The tangential inputs of a scene (docs/theory.md §13); errors name the table.
+/// The tangential inputs of a scene (docs/theory.md §14); errors name the table.
 fn oblique_of(raw: &RawScene) -> Result<Oblique> {
     let inertia = |table: &str, k: Option<f64>| -> Result<f64> {
         inertia_factor("inertia_factor", k.unwrap_or(SOLID_SPHERE))

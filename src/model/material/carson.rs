@@ -133,7 +133,7 @@ pub fn equivalent_relaxation(material: &Material) -> Result<Prony> {
     })
 }
 
-/// The tangential relaxation function of the MDR's tangential foundation (docs/theory.md §13),
+/// The tangential relaxation function of the MDR's tangential foundation (docs/theory.md §14),
 /// `G_t(t) / 4` as an exact Prony series (Pa, s), where in Carson transforms
 ///
 /// ```text

@@ -30,6 +30,7 @@ mod check;
 pub mod dma;
 mod impact;
 mod limits;
+pub mod oblique;
 mod prescribed;
 pub mod shapes;
 mod tables;
@@ -280,6 +281,17 @@ pub fn run(opts: &ValidateOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
     w(&mut md, &dma::round_trip_table()?.markdown());
     tick();
 
+    // 1g. oblique impacts
+    w(
+        &mut md,
+        "\n## 1g. Oblique impacts: friction, partial slip and spin\n\n",
+    );
+    w(&mut md, oblique::OBLIQUE_TEXT);
+    w(&mut md, &oblique::oblique_table()?.markdown());
+    w(&mut md, oblique::MBF_TEXT);
+    w(&mut md, &oblique::mbf_table()?.markdown());
+    tick();
+
     // 2. prescribed histories
     w(
         &mut md,
@@ -509,7 +521,7 @@ across one element, the viscous part of the density jumps at the edge and the or
 pub fn units() -> u64 {
     let hist = 2;
     let external = EXTERNAL_TABLE.lines().count().saturating_sub(1) * external_settings().len();
-    (IMPACTS.len() * settings().len() + 1 + external + IMPACTS.len() * hist + 7) as u64
+    (IMPACTS.len() * settings().len() + 1 + external + IMPACTS.len() * hist + 8) as u64
 }
 
 fn rel(file: &Path, base: &Path) -> String {

@@ -1,4 +1,4 @@
-//! The MDR's tangential foundation (docs/theory.md §13): oblique impacts with Coulomb friction,
+//! The MDR's tangential foundation (docs/theory.md §14): oblique impacts with Coulomb friction,
 //! partial slip and spin, on top of the normal foundation and never changing it.
 //!
 //! Every element of the normal foundation in contact also carries a tangential spring of the
@@ -293,7 +293,8 @@ pub fn run_oblique(
 
 /// Solve an oblique impact with `mdr` to `rtol`: levels doubling the elements and the steps
 /// from the normal driver's start, accepted when the normal CoR passes the normal driver's
-/// test (relative) and `v_c' / v_c` passes the same test in absolute terms (it crosses zero).
+/// test (relative, `rtol`) and `v_c' / v_c` passes the same test in absolute terms (it crosses
+/// zero) at `max(rtol, OBLIQUE_TANGENTIAL_ATOL)` with first order assumed.
 /// With an explicit resolution, one run on it.
 pub fn solve_oblique(
     material: &CanonicalMaterial,
@@ -337,10 +338,11 @@ pub fn solve_oblique(
             dt.push(tcor - pt);
             let sn = o.normal.cor.abs().max(1e-300);
             let en = accept(&dn, 2.0, rtol * sn).map(|e| e / sn);
-            let et = accept(&dt, 2.0, rtol);
+            let atol = rtol.max(tolerances::OBLIQUE_TANGENTIAL_ATOL);
+            let et = accept(&dt, 1.0, atol);
             if let (Some(en), Some(et)) = (en, et) {
-                last_estimate = en.max(et);
-                if last_estimate <= tolerances::MDR_SAFETY * rtol {
+                last_estimate = (en / rtol).max(et / atol) * rtol;
+                if en <= tolerances::MDR_SAFETY * rtol && et <= tolerances::MDR_SAFETY * atol {
                     o.normal.work = work;
                     o.normal.cor_error_estimate = Some(en);
                     o.error_estimate = Some(et);

@@ -1,4 +1,4 @@
-//! The reference route of oblique impacts (docs/theory.md §13.4), sharing no code with the MDR's
+//! The reference route of oblique impacts (docs/theory.md §14.4), sharing no code with the MDR's
 //! tangential foundation ([`crate::solvers::mdr::oblique`]).
 //!
 //! - the normal history `d(t)` and the contact radius `a(t)` come from the Lee–Radok/Ting
@@ -19,7 +19,7 @@
 //!
 //! The exact limits it meets: gross slip (the impulse `mu (1 + e) m v0`), and for an elastic
 //! material whose nodes never slip, the closed form of the no-slip hereditary integral
-//! (docs/theory.md §13.3) that the tests evaluate separately.
+//! (docs/theory.md §14.3) that the tests evaluate separately.
 
 use crate::error::{Error, Result};
 use crate::model::contact::Contact;
@@ -242,4 +242,73 @@ fn tangential_update(
     node.w += dw;
     node.q = q;
     slid
+}
+
+/// The no-slip limit (`mu -> inf`, docs/theory.md §14.3): the slip velocity after the impact
+/// (units `v0`) from the tangential hereditary integral
+///
+/// ```text
+/// Q(t) = 8 int_0^t (G_t/4)(t - t') min(a*(t'), a(t)) u'(t') dt',   a*(t') = max_{s <= t'} a(s)
+/// ```
+///
+/// (every point of the contact line sticks from its entry, when `a` first reaches it, until
+/// Ting's `a(t)` passes it again), with `v_c' = -lambda Q` and `u' = v_c`, on `steps` uniform
+/// intervals of the Lee–Radok/Ting normal history: midpoint rule in the hereditary integral,
+/// trapezoidal rule for the impactor. `O(steps^2)` work.
+pub fn no_slip(contact: &Contact, tangential: &Tangential, rtol: f64, steps: usize) -> Result<f64> {
+    if steps < 16 {
+        return Err(Error::OutOfRange {
+            field: "steps",
+            value: steps as f64,
+            allowed: "steps >= 16",
+        });
+    }
+    let gn = contact.independent_g_eq()?;
+    let first = super::reference::impact_on(contact.geometry, gn, rtol, false)?;
+    let t_end = 1.02 * first.contact_time;
+    let times: Vec<f64> = (0..=steps)
+        .map(|i| t_end * i as f64 / steps as f64)
+        .collect();
+    let normal = super::reference::impact_at_on(contact.geometry, gn, rtol, &times)?;
+    let h = normal
+        .history
+        .as_ref()
+        .ok_or(Error::Internal("the sampled reference run has no history"))?;
+    let dt = t_end / steps as f64;
+    let gt = &tangential.g_t;
+    let lambda = tangential.compliance;
+    // a*(t) at the sample times
+    let mut a_star = Vec::with_capacity(h.len());
+    let mut m = 0.0f64;
+    for &a in &h.a {
+        m = m.max(a);
+        a_star.push(m);
+    }
+    let (mut v, mut q) = (tangential.slip_velocity, 0.0);
+    let mut du: Vec<f64> = Vec::with_capacity(steps);
+    let k_self = 8.0 * gt.eval(0.5 * dt);
+    for n in 0..steps {
+        let a1 = h.a[n + 1];
+        // the known part of Q_{n+1}
+        let t1 = h.t[n + 1];
+        let mut s = 0.0;
+        for (j, d) in du.iter().enumerate() {
+            let tm = 0.5 * (h.t[j] + h.t[j + 1]);
+            s += gt.eval(t1 - tm) * a_star[j + 1].min(a1) * d;
+        }
+        s *= 8.0;
+        let c = lambda * dt * dt / 4.0;
+        let step = (dt * v - c * (q + s)) / (1.0 + c * k_self * a1);
+        let q1 = s + k_self * a1 * step;
+        v -= lambda * 0.5 * dt * (q + q1);
+        q = q1;
+        du.push(step);
+    }
+    if !v.is_finite() {
+        return Err(Error::NonFinite {
+            what: "no-slip tangential integral",
+            value: v,
+        });
+    }
+    Ok(v)
 }
