@@ -59,7 +59,7 @@ impl AngleRange {
         let min: f64 = min.parse().map_err(|_| bad())?;
         let max: f64 = max.parse().map_err(|_| bad())?;
         let n: usize = n.parse().map_err(|_| bad())?;
-        if !(min >= 0.0 && min < max && max < 90.0) || !(2..=MAX_ANGLES).contains(&n) {
+        if !(min >= 0.0 && min < max && max < 90.0 && (2..=MAX_ANGLES).contains(&n)) {
             return Err(bad());
         }
         Ok(Self { min, max, n })
