@@ -1,0 +1,321 @@
+//! Materials: `Prony`, the standard solid `Material` and the general `GeneralMaterial`.
+
+use super::*;
+
+/// A Prony series `f(t) = relaxed + sum_i c_i exp(-t / tau_i)`: moduli in Pa, times in s.
+///
+/// `Prony(relaxed, terms=())` with `terms` a sequence of pairs `(c_i, tau_i)` (an `(n, 2)` array
+/// works). It only holds the numbers; they are checked where the series is used (a
+/// `GeneralMaterial` names `g_i[k]`, `tau_i[k]`, `k_j[k]`, `theta_j[k]` in its errors). Calling
+/// it evaluates `f(t)` (Pa) elementwise at the times `t` (s, `t >= 0`): a float for a scalar,
+/// else an array of the shape of `t`.
+#[pyclass(frozen, eq, module = "mdr_impact")]
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Prony {
+    relaxed: f64,
+    terms: Vec<(f64, f64)>,
+}
+
+#[pymethods]
+impl Prony {
+    #[new]
+    #[pyo3(signature = (relaxed, terms = Vec::new()))]
+    fn new(relaxed: f64, terms: Vec<[f64; 2]>) -> Self {
+        Self {
+            relaxed,
+            terms: terms.into_iter().map(|[c, t]| (c, t)).collect(),
+        }
+    }
+
+    /// The relaxed value `f(inf)` (Pa).
+    #[getter]
+    fn relaxed(&self) -> f64 {
+        self.relaxed
+    }
+
+    /// The terms as an `(n, 2)` array of `(c_i` (Pa), `tau_i` (s)`)`.
+    #[getter]
+    fn terms<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let flat: Vec<f64> = self.terms.iter().flat_map(|&(c, t)| [c, t]).collect();
+        array(py, flat, &[self.terms.len(), 2])
+    }
+
+    /// The glassy value `f(0) = relaxed + sum_i c_i` (Pa).
+    #[getter]
+    fn glassy(&self) -> f64 {
+        self.relaxed + self.terms.iter().map(|&(c, _)| c).sum::<f64>()
+    }
+
+    fn __call__<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyArrayLikeDyn<'py, f64, numpy::AllowTypeChange>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let p = self.library();
+        let values = t.as_array().mapv(|t| p.eval(t));
+        if values.ndim() == 0 {
+            let v = values.iter().next().copied().unwrap_or(f64::NAN);
+            return Ok(v.into_pyobject(py)?.into_any());
+        }
+        Ok(PyArrayDyn::from_owned_array(py, values).into_any())
+    }
+
+    fn __len__(&self) -> usize {
+        self.terms.len()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Prony(relaxed={:?}, terms={:?})", self.relaxed, self.terms)
+    }
+}
+
+impl Prony {
+    fn library(&self) -> mdr_impact::Prony {
+        mdr_impact::Prony {
+            relaxed: self.relaxed,
+            terms: self
+                .terms
+                .iter()
+                .map(|&(coefficient, tau)| mdr_impact::PronyTerm { coefficient, tau })
+                .collect(),
+        }
+    }
+    pub(crate) fn of(p: &mdr_impact::Prony) -> Self {
+        Self {
+            relaxed: p.relaxed,
+            terms: p.terms.iter().map(|t| (t.coefficient, t.tau)).collect(),
+        }
+    }
+}
+
+/// The paper's standard solid: shear `G(t) = g_inf + g_1 exp(-t g_1 / eta)` (Pa, Pa s) with an
+/// elastic bulk given by the static Poisson ratio `poisson` (`-1 < nu <= 0.5`, 0.5:
+/// incompressible) or the bulk modulus `k_0` (Pa), exactly one of them.
+#[pyclass(frozen, eq, module = "mdr_impact")]
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Material {
+    inner: RsMaterial,
+    /// The standard solid's view of `inner` (built by a standard-solid constructor).
+    solid: StandardSolid,
+}
+
+impl Material {
+    /// The Python `Material` of a material of the standard solid's shape.
+    pub(crate) fn of(inner: RsMaterial) -> Option<Self> {
+        let solid = inner.as_standard_solid()?;
+        Some(Self { inner, solid })
+    }
+}
+
+#[pymethods]
+impl Material {
+    #[new]
+    #[pyo3(signature = (g_inf, g_1, eta, *, poisson = None, k_0 = None))]
+    fn new(
+        g_inf: f64,
+        g_1: f64,
+        eta: f64,
+        poisson: Option<f64>,
+        k_0: Option<f64>,
+    ) -> PyResult<Self> {
+        let inner = match (poisson, k_0) {
+            (Some(nu), None) => ok(RsMaterial::with_poisson(g_inf, g_1, eta, nu))?,
+            (None, Some(k)) => ok(RsMaterial::new(g_inf, g_1, eta, k))?,
+            (Some(_), Some(_)) => return Err(usage("give either poisson or k_0, not both".into())),
+            (None, None) => {
+                return Err(usage("missing poisson (-1 < nu <= 0.5) or k_0 (Pa)".into()))
+            }
+        };
+        Self::of(inner).ok_or_else(|| {
+            usage("internal: a standard solid without the standard solid's shape".into())
+        })
+    }
+    /// Relaxed shear modulus `G_inf` (Pa).
+    #[getter]
+    fn g_inf(&self) -> f64 {
+        self.inner.g_inf()
+    }
+    /// Relaxing shear modulus `G_1` (Pa).
+    #[getter]
+    fn g_1(&self) -> f64 {
+        self.solid.g_1()
+    }
+    /// Shear viscosity `eta` (Pa s).
+    #[getter]
+    fn eta(&self) -> f64 {
+        self.solid.eta()
+    }
+    /// Bulk modulus `K_0` (Pa), `inf` when incompressible.
+    #[getter]
+    fn k_0(&self) -> f64 {
+        self.solid.k_0()
+    }
+    /// Static Poisson ratio (dimensionless; 0.5 when incompressible).
+    #[getter]
+    fn poisson(&self) -> f64 {
+        match self.solid.bulk() {
+            Bulk::Incompressible => 0.5,
+            Bulk::Modulus(_) => self.solid.poisson(),
+        }
+    }
+    /// Relaxation time `tau = eta / g_1` (s).
+    #[getter]
+    fn tau(&self) -> f64 {
+        self.solid.tau()
+    }
+    /// True when `g_1 = 0` or `eta = 0` (Hertz with `g_inf`).
+    #[getter]
+    fn is_elastic(&self) -> bool {
+        self.solid.is_elastic()
+    }
+    /// The equivalent incompressible relaxation function `G_eq(t)` (docs/theory.md §2) as a
+    /// `Prony` (Pa, s).
+    fn equivalent_relaxation(&self) -> Prony {
+        Prony::of(&self.solid.equivalent_relaxation())
+    }
+    /// This standard solid as a `GeneralMaterial` (one shear term).
+    fn general(&self) -> GeneralMaterial {
+        let bulk = match self.inner.written_poisson() {
+            Some(nu) => BulkInput::Poisson(nu),
+            None => BulkInput::from(self.inner.bulk().clone()),
+        };
+        GeneralMaterial {
+            inner: RsMaterial::general(self.inner.shear().clone(), bulk)
+                .expect("a validated shear series and resolved bulk"),
+        }
+    }
+    fn __repr__(&self) -> String {
+        let bulk = match self.solid.bulk() {
+            Bulk::Incompressible => "poisson=0.5".to_string(),
+            Bulk::Modulus(k) => format!("k_0={k:?}"),
+        };
+        format!(
+            "Material(g_inf={:?}, g_1={:?}, eta={:?}, {bulk})",
+            self.inner.g_inf(),
+            self.solid.g_1(),
+            self.solid.eta()
+        )
+    }
+}
+
+/// A general linear-viscoelastic solid (docs/theory.md §8): the shear series `shear` (a `Prony`
+/// with `relaxed = g_inf`, terms `(g_i, tau_i)`) and exactly one bulk: `bulk` (a `Prony`,
+/// `relaxed = k_inf`, terms `(k_j, theta_j)`), `k_0` (Pa), `poisson` or `incompressible=True`.
+#[pyclass(frozen, eq, module = "mdr_impact")]
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct GeneralMaterial {
+    inner: RsMaterial,
+}
+
+#[pymethods]
+impl GeneralMaterial {
+    #[new]
+    #[pyo3(signature = (shear, *, bulk = None, k_0 = None, poisson = None, incompressible = false))]
+    fn new(
+        shear: PyRef<'_, Prony>,
+        bulk: Option<PyRef<'_, Prony>>,
+        k_0: Option<f64>,
+        poisson: Option<f64>,
+        incompressible: bool,
+    ) -> PyResult<Self> {
+        let given = [
+            bulk.is_some(),
+            k_0.is_some(),
+            poisson.is_some(),
+            incompressible,
+        ];
+        if given.iter().filter(|g| **g).count() != 1 {
+            return Err(usage(
+                "give exactly one bulk: bulk=Prony(k_inf, terms), k_0, poisson or \
+                 incompressible=True"
+                    .into(),
+            ));
+        }
+        let s = ok(ShearProny::new(shear.relaxed, &shear.terms))?;
+        let rheology = match (bulk, k_0, poisson) {
+            (Some(b), _, _) => BulkInput::Prony(ok(BulkProny::new(b.relaxed, &b.terms))?),
+            (_, Some(k), _) => BulkInput::Elastic(k),
+            (_, _, Some(nu)) => BulkInput::Poisson(nu),
+            _ => BulkInput::Incompressible,
+        };
+        Ok(Self {
+            inner: ok(RsMaterial::general(s, rheology))?,
+        })
+    }
+    /// The shear series `G(t)` as validated (terms sorted by time, equal times merged, zero
+    /// moduli dropped).
+    #[getter]
+    fn shear(&self) -> Prony {
+        let s = self.inner.shear();
+        Prony {
+            relaxed: s.g_inf(),
+            terms: s.terms().to_vec(),
+        }
+    }
+    /// The bulk series `K(t)` when viscoelastic, else `None`.
+    #[getter]
+    fn bulk(&self) -> Option<Prony> {
+        match self.inner.bulk() {
+            BulkRheology::Prony(p) => Some(Prony {
+                relaxed: p.k_inf(),
+                terms: p.terms().to_vec(),
+            }),
+            _ => None,
+        }
+    }
+    /// `"incompressible"`, `"elastic"` or `"prony"`.
+    #[getter]
+    fn bulk_kind(&self) -> &'static str {
+        match self.inner.bulk() {
+            BulkRheology::Incompressible => "incompressible",
+            BulkRheology::Prony(_) => "prony",
+            BulkRheology::Elastic(_) => "elastic",
+        }
+    }
+    /// Relaxed bulk modulus `K(inf)` (Pa), `inf` when incompressible.
+    #[getter]
+    fn k_0(&self) -> f64 {
+        self.inner.bulk_relaxed()
+    }
+    /// `G_eq(t)` (docs/theory.md §8) as an exact `Prony` series (Pa, s).
+    fn equivalent_relaxation(&self) -> PyResult<Prony> {
+        Ok(Prony::of(&ok(self.inner.equivalent_relaxation())?))
+    }
+    fn __repr__(&self) -> String {
+        let bulk = match self.inner.bulk() {
+            BulkRheology::Incompressible => "incompressible=True".to_string(),
+            BulkRheology::Elastic(k) => format!("k_0={k:?}"),
+            BulkRheology::Prony(_) => format!(
+                "bulk={}",
+                self.bulk().map(|b| b.__repr__()).unwrap_or_default()
+            ),
+        };
+        format!("GeneralMaterial(shear={}, {bulk})", self.shear().__repr__())
+    }
+}
+
+/// A Python material object (`Material`, `GeneralMaterial`) as the library's body material.
+pub(crate) fn body_material(m: &Bound<'_, PyAny>) -> PyResult<BodyMaterial> {
+    if let Ok(m) = m.cast::<Material>() {
+        return Ok(BodyMaterial::Viscoelastic(m.get().inner.clone()));
+    }
+    if let Ok(m) = m.cast::<GeneralMaterial>() {
+        return Ok(BodyMaterial::Viscoelastic(m.get().inner.clone()));
+    }
+    Err(pyo3::exceptions::PyTypeError::new_err(format!(
+        "material must be a Material or a GeneralMaterial, not {}",
+        m.get_type().name()?
+    )))
+}
+
+/// A body material as a Python object (`None` when rigid): a `Material` when it was written as
+/// a standard solid, else a `GeneralMaterial`.
+pub(crate) fn material_object(py: Python<'_>, m: &BodyMaterial) -> PyResult<Option<Py<PyAny>>> {
+    let Some(m) = m.material() else {
+        return Ok(None);
+    };
+    Ok(Some(match Material::of(m.clone()) {
+        Some(s) if m.is_written_as_standard_solid() => Py::new(py, s)?.into_any(),
+        _ => Py::new(py, GeneralMaterial { inner: m.clone() })?.into_any(),
+    }))
+}
