@@ -313,3 +313,23 @@ fn cli_run_json_and_curve_angle() {
         1
     );
 }
+
+#[test]
+fn dem_mindlin_models_against_mdr() {
+    use mdr_impact::report::validate::oblique::{dem_row, DEM_ANGLES};
+    for th in DEM_ANGLES {
+        let (m, a, b) = dem_row(th).unwrap();
+        eprintln!(
+            "{th}: mdr {m:.5} mindlin {a:.5} ({:+.1e}) mindlin/force {b:.5} ({:+.1e})",
+            a - m,
+            b - m
+        );
+        if th >= 45.0 {
+            // gross slip: every model gives the exact answer (to its time step)
+            assert!(
+                (a - m).abs() < 2e-3 && (b - m).abs() < 2e-3,
+                "{th}: {m} {a} {b}"
+            );
+        }
+    }
+}

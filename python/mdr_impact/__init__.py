@@ -78,12 +78,14 @@ __all__ = [
     "Prony",
     "Scene",
     "Sphere",
+    "angle_curve",
     "catalogue",
     "cor",
     "curve",
     "dem",
     "fit",
     "impact",
+    "oblique",
     "prony",
 ]
 
@@ -321,6 +323,47 @@ def curve(scene, v0):
     v = _floats("v0", v0)
     flat = np.ascontiguousarray(v, dtype=np.float64).reshape(-1)
     return Curve(_core.curve_values(scene, flat, list(v.shape)))
+
+
+def oblique(scene, friction=None, tangential_velocity=None, spin=None, inertia_factor=None):
+    """The oblique impact of ``scene`` (docs/theory.md §14): its ``[friction]``,
+    ``tangential_velocity``, ``spin`` and inertia factors, each replaced by the argument when
+    given (``friction``: Coulomb coefficient; ``tangential_velocity``: m/s; ``spin``: rad/s,
+    positive in the forward rolling sense; ``inertia_factor``: ``I = factor m R^2``).
+
+    Returns a dict with ``cor``, ``solver`` and the keys of ``mdr-impact run --json``:
+    ``tangential_cor``, ``tangential_cor_centre``, ``spin_after`` (rad/s),
+    ``rebound_angle_deg``, ``contact_patch_rebound_angle_deg``, ``friction_dissipated_energy``
+    (J), ``tangential_impulse`` (N s), ``tangential_error_estimate`` (``None`` when not
+    estimated); a ratio whose initial velocity is zero is NaN.
+
+    Examples
+    --------
+    >>> import mdr_impact as mi
+    >>> o = mi.oblique(mi.Scene.default(), friction=0.3, tangential_velocity=0.5)
+    >>> o["solver"], -1.0 < o["tangential_cor"] < 1.0
+    ('mdr', True)
+    """
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a Scene, not {type(scene).__name__}")
+    return _core.oblique_values(scene, friction, tangential_velocity, spin, inertia_factor)
+
+
+def angle_curve(scene, angles, speed, friction=None, spin=None, inertia_factor=None):
+    """``mdr-impact curve --angle`` in Python: ``scene`` hit at ``speed`` (m/s) from each of
+    ``angles`` (degrees from the normal, ``0 <= angle < 90``), the normal speed
+    ``speed cos(angle)`` and the tangential ``speed sin(angle)``; ``friction``, ``spin`` and
+    ``inertia_factor`` replace the scene's when given.
+
+    Returns a dict of 1-D arrays with the columns of ``curve.csv``: ``angle_deg``, ``cor``,
+    ``tangential_cor``, ``tangential_cor_centre``, ``rebound_angle_deg``,
+    ``contact_patch_rebound_angle_deg``, ``spin_after``.
+    """
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a Scene, not {type(scene).__name__}")
+    a = _floats("angles", angles).reshape(-1)
+    return _core.angle_curve_values(scene, [float(x) for x in a], float(speed), friction,
+                                    spin, inertia_factor)
 
 
 def catalogue():

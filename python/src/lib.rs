@@ -8,6 +8,7 @@
 //! docstrings, is `mdr_impact/__init__.py`; the docstrings here describe the classes.
 
 mod materials;
+mod oblique;
 mod reports;
 mod result;
 mod scene;
@@ -32,6 +33,7 @@ use mdr_impact::{
 };
 
 use materials::{body_material, material_object, GeneralMaterial, Material, Prony};
+use oblique::{angle_curve_values, oblique_values};
 use reports::{curve_values, dem_report, fit_report, prony_report};
 use result::ImpactResult;
 use scene::{Body, Indenter, Scene, Sphere};
@@ -144,6 +146,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("DEFAULT_SCENE", mdr_impact::io::scene::DEFAULT_SCENE)?;
     m.add_function(wrap_pyfunction!(cor_groups, m)?)?;
     m.add_function(wrap_pyfunction!(curve_values, m)?)?;
+    m.add_function(wrap_pyfunction!(oblique_values, m)?)?;
+    m.add_function(wrap_pyfunction!(angle_curve_values, m)?)?;
     m.add_function(wrap_pyfunction!(catalogue_impacts, m)?)?;
     m.add_function(wrap_pyfunction!(dem_report, m)?)?;
     m.add_function(wrap_pyfunction!(prony_report, m)?)?;

@@ -341,6 +341,7 @@ impl Scene {
                 plot,
                 temperature: None,
                 shifts: Vec::new(),
+                oblique: Default::default(),
             },
         })
     }
@@ -421,14 +422,21 @@ impl Scene {
             ..self.inner.options
         };
         let impact = &self.inner.impact;
-        let outcome = ok(py.detach(|| mdr_impact::solve(impact, &opts)))?;
+        // the normal outcome of `run`: an oblique scene's is that of its oblique solve
+        let oblique = &self.inner.oblique;
+        let oo =
+            ok(py.detach(|| mdr_impact::solvers::oblique::solve_oblique(impact, oblique, &opts)))?;
+        let outcome = oo.normal;
         let bodies = impact
             .bodies()
             .map(|b| b.rebound_velocities(impact.velocity(), outcome.cor));
         let validity = mdr_impact::model::validity::Validity::of(impact, &outcome);
         // as `run --json`: `fallback` says why auto did not answer with fast, and the
         // plausibility warnings of the inputs come first
-        let fallback = output::fallback(&opts, &outcome);
+        let fallback = match oo.reason {
+            Some(why) => Some(why.to_string()),
+            None => output::fallback(&opts, &outcome),
+        };
         let mut warnings = mdr_impact::model::plausibility::warnings(impact);
         let mut r = ImpactResult::new(outcome, bodies, validity);
         r.fallback = fallback;

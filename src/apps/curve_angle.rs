@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
 
-use crate::error::{escape_text, Error, Result};
+use crate::error::{check, escape_text, Error, Result};
 use crate::io::output::{fmt, write_atomic};
 use crate::io::plot::line_chart_svg;
 use crate::model::impact::Impact;
@@ -129,11 +129,31 @@ pub fn run(
     speed: f64,
     tick: &(dyn Fn() + Sync),
 ) -> Result<Vec<AngleRow>> {
+    run_angles(impact, oblique, opts, &range.values(), speed, tick)
+}
+
+/// [`run`] at the given angles (degrees, each in `[0, 90)`), in their order.
+pub fn run_angles(
+    impact: &Impact,
+    oblique: &Oblique,
+    opts: &SolveOptions,
+    angles: &[f64],
+    speed: f64,
+    tick: &(dyn Fn() + Sync),
+) -> Result<Vec<AngleRow>> {
     let speed = check_speed(speed)?;
+    for &a in angles {
+        check(
+            "angle",
+            a,
+            (0.0..90.0).contains(&a),
+            "0 <= angle < 90 (degrees)",
+        )?;
+    }
     let mut opts = *opts;
     opts.history = false;
-    range
-        .values()
+    angles
+        .to_vec()
         .into_par_iter()
         .map(|angle| {
             let (imp, ob) = at_angle(impact, oblique, speed, angle)?;

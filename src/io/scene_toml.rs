@@ -16,6 +16,7 @@ use crate::model::bodies::{Body, BodyMaterial};
 use crate::model::geometry::Shape;
 use crate::model::impact::Target;
 use crate::model::material::{Bulk, BulkRheology, Material, StandardSolid};
+use crate::model::oblique::SOLID_SPHERE;
 
 /// An `f64` as a TOML float: shortest round-trip digits, always with a `.` or an exponent
 /// (`1.0`, `5e-3`, `inf`).
@@ -111,13 +112,23 @@ fn general(out: &mut String, table: &str, m: &Material) {
     }
 }
 
-fn body(out: &mut String, b: &Body, exact: bool) {
+/// `inertia_factor = ...` when it is not the default (a solid sphere).
+fn inertia(kappa: f64) -> String {
+    if kappa == SOLID_SPHERE {
+        String::new()
+    } else {
+        format!("inertia_factor = {}\n", num(kappa))
+    }
+}
+
+fn body(out: &mut String, b: &Body, exact: bool, kappa: f64) {
     out.push_str("\n[[body]]\n");
     let _ = writeln!(out, "mass = {}        # kg", num(b.mass()));
     let _ = writeln!(out, "radius = {}      # m", num(b.radius()));
     if exact {
         out.push_str("profile = \"sphere\"\n");
     }
+    out.push_str(&inertia(kappa));
     match b.material() {
         BodyMaterial::Rigid => out.push_str("rigid = true\n"),
         BodyMaterial::Viscoelastic(m) => {
@@ -144,6 +155,17 @@ impl Scene {
             "[impact]\nvelocity = {}     # m/s",
             num(imp.velocity())
         );
+        let ob = &self.oblique;
+        if ob.tangential_velocity != 0.0 {
+            let _ = writeln!(
+                out,
+                "tangential_velocity = {}     # m/s",
+                num(ob.tangential_velocity)
+            );
+        }
+        if ob.spin != 0.0 {
+            let _ = writeln!(out, "spin = {}     # rad/s", num(ob.spin));
+        }
         let sphere = |out: &mut String| {
             let s = imp.sphere();
             let indenter = |out: &mut String, keys: &str| {
@@ -162,9 +184,10 @@ impl Scene {
                     };
                     let _ = writeln!(
                         out,
-                        "\n[sphere]\nmass = {}        # kg\nradius = {}      # m\n{profile}",
+                        "\n[sphere]\nmass = {}        # kg\nradius = {}      # m\n{profile}{}",
                         num(s.mass()),
-                        num(s.radius())
+                        num(s.radius()),
+                        inertia(ob.inertia)
                     );
                 }
                 Shape::Cone { half_angle_deg } => indenter(
@@ -198,9 +221,12 @@ impl Scene {
                     Shape::Spheres { caps } => [caps[0].exact, caps[1].exact],
                     _ => [false, false],
                 };
-                body(&mut out, b.a(), exact[0]);
-                body(&mut out, b.b(), exact[1]);
+                body(&mut out, b.a(), exact[0], ob.inertia);
+                body(&mut out, b.b(), exact[1], ob.inertia_b);
             }
+        }
+        if ob.friction != 0.0 {
+            let _ = writeln!(out, "\n[friction]\ncoefficient = {}", num(ob.friction));
         }
         let o = &self.options;
         let _ = writeln!(

@@ -80,6 +80,7 @@ use plotters::style::RGBColor;
 mod fitting;
 mod laws;
 mod output;
+pub mod tangential;
 mod versions;
 
 pub use fitting::*;

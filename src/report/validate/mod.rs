@@ -290,6 +290,8 @@ pub fn run(opts: &ValidateOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
     w(&mut md, &oblique::oblique_table()?.markdown());
     w(&mut md, oblique::MBF_TEXT);
     w(&mut md, &oblique::mbf_table()?.markdown());
+    w(&mut md, oblique::DEM_TEXT);
+    w(&mut md, &oblique::dem_table()?.markdown());
     tick();
 
     // 2. prescribed histories
