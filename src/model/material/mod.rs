@@ -197,6 +197,19 @@ impl Material {
         if self.shear.is_liquid() {
             return None;
         }
+        self.standard_view()
+    }
+
+    /// The parameters `(g_inf, G_1, eta, bulk)` of a material built by a standard-solid
+    /// constructor, as a [`StandardSolid`], also for a Maxwell fluid (`g_inf = 0`), which
+    /// [`Material::as_standard_solid`] does not treat as one (its groups do not exist): for
+    /// display and bindings only. `None` when not written as a standard solid.
+    pub fn written_standard_solid(&self) -> Option<StandardSolid> {
+        self.written.and_then(|_| self.standard_view())
+    }
+
+    /// The standard solid's view of the shape, liquid or not (see [`Material::as_standard_solid`]).
+    fn standard_view(&self) -> Option<StandardSolid> {
         let bulk = match self.bulk {
             BulkRheology::Incompressible => Bulk::Incompressible,
             BulkRheology::Elastic(k) => Bulk::Modulus(k),
