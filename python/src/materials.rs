@@ -90,7 +90,9 @@ impl Prony {
 
 /// The paper's standard solid: shear `G(t) = g_inf + g_1 exp(-t g_1 / eta)` (Pa, Pa s) with an
 /// elastic bulk given by the static Poisson ratio `poisson` (`-1 < nu <= 0.5`, 0.5:
-/// incompressible) or the bulk modulus `k_0` (Pa), exactly one of them.
+/// incompressible) or the bulk modulus `k_0` (Pa), exactly one of them. `g_inf = 0` (with
+/// `g_1 > 0`, `eta > 0`) is a Maxwell fluid, which has no groups (its `poisson` must be 0.5 or a
+/// `k_0` given). `shift` (a `Shift`) is applied by a `Scene` at its temperature.
 #[pyclass(frozen, eq, module = "mdr_impact")]
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Material {
@@ -218,7 +220,9 @@ impl Material {
 
 /// A general linear-viscoelastic solid (docs/theory.md §8): the shear series `shear` (a `Prony`
 /// with `relaxed = g_inf`, terms `(g_i, tau_i)`) and exactly one bulk: `bulk` (a `Prony`,
-/// `relaxed = k_inf`, terms `(k_j, theta_j)`), `k_0` (Pa), `poisson` or `incompressible=True`.
+/// `relaxed = k_inf`, terms `(k_j, theta_j)`), `k_0` (Pa), `poisson` or `incompressible=True`;
+/// `g_inf = 0` with a term is a viscoelastic liquid. `shift` (a `Shift`) is applied by a `Scene`
+/// at its temperature.
 #[pyclass(frozen, eq, module = "mdr_impact")]
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct GeneralMaterial {

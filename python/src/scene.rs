@@ -266,7 +266,8 @@ impl Body {
 /// `1e-12 <= rtol <= 0.1`, default `1e-6`), and optionally an explicit MDR resolution
 /// `elements`, `steps` (counts); the `[output]` paths `history_csv` (TOML key `history`) and
 /// `plot` are kept for `to_toml` (the files are written by `mdr-impact run`, not by
-/// `Scene.run`).
+/// `Scene.run`); `temperature` (°C) shifts every material given with a `shift` law (default:
+/// each law's `t_ref`), as `[impact] temperature` does.
 #[pyclass(frozen, eq, module = "mdr_impact")]
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Scene {
