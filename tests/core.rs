@@ -183,7 +183,12 @@ fn error_variants() {
         Err(OutOfRange { field, .. }) => assert_eq!(field, f),
         other => panic!("expected OutOfRange({f}), got {other:?}"),
     };
-    bad(Material::with_poisson(0.0, 1.0, 1.0, 0.3), "g_inf");
+    // g_inf = 0 is a Maxwell fluid: a static Poisson ratio below 0.5 would give K_0 = 0, and
+    // without a Maxwell term no modulus is left
+    bad(Material::with_poisson(0.0, 1.0, 1.0, 0.3), "nu");
+    bad(Material::with_poisson(0.0, 0.0, 1.0, 0.5), "g_inf");
+    bad(Material::with_poisson(0.0, 1.0, 0.0, 0.5), "g_inf");
+    bad(Material::with_poisson(-1.0, 1.0, 1.0, 0.3), "g_inf");
     bad(Material::with_poisson(f64::NAN, 1.0, 1.0, 0.3), "g_inf");
     bad(Material::with_poisson(1.0, -1.0, 1.0, 0.3), "g_1");
     bad(Material::with_poisson(1.0, 1.0, -1.0, 0.3), "eta");

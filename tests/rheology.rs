@@ -412,12 +412,15 @@ fn bad_input_names_field_and_index() {
     assert!(out_of_range(ShearProny::elastic(f64::NAN).map(|_| ()))
         .1
         .is_nan());
-    for k_inf in [0.0, -3.0] {
+    for k_inf in [-3.0, f64::INFINITY] {
         assert_eq!(
             out_of_range(BulkProny::new(k_inf, &[(1.0, 1.0)]).map(|_| ())),
             ("k_inf", k_inf)
         );
     }
+    // a bulk that relaxes to zero is allowed, as a shear series that does (a liquid)
+    assert!(BulkProny::new(0.0, &[(1.0, 1.0)]).is_ok());
+    assert!(ShearProny::new(0.0, &[(1.0, 1.0)]).is_ok());
     // empty, or nothing left after dropping zero moduli
     assert_eq!(
         out_of_range(BulkProny::new(1.0, &[]).map(|_| ())),
@@ -600,13 +603,25 @@ fn two_bodies_combine_compliances() {
         }
     }
     let bad = Prony {
-        relaxed: 0.0,
+        relaxed: -1.0,
         terms: vec![],
     };
     assert!(matches!(
         carson::combine(&series[0].1, &bad),
         Err(Error::OutOfRange {
             field: "relaxed",
+            ..
+        })
+    ));
+    // relaxing to zero is a liquid, but with no term nothing is left
+    let empty = Prony {
+        relaxed: 0.0,
+        terms: vec![],
+    };
+    assert!(matches!(
+        carson::combine(&series[0].1, &empty),
+        Err(Error::OutOfRange {
+            field: "glassy",
             ..
         })
     ));

@@ -23,7 +23,8 @@ fit(data, scene=None, model="standard-solid", fix=None, tau_range=None, out=None
 Classes
 -------
 Material, GeneralMaterial, Prony, Sphere (profile: paraboloid or exact sphere), Indenter (cone,
-power law, flat punch, ...), Body, Scene, ImpactResult, Curve; ``Error`` (a
+power law, flat punch, ...), Body, Scene (``temperature=``), Shift (WLF or Arrhenius, a material's
+``shift=``), ImpactResult, Curve; ``Error`` (a
 ``ValueError``) for bad input and refused solves, with the message the command line prints.
 
 ``__version__`` is the package's version (as ``importlib.metadata.version("mdr-impact")``),
@@ -58,6 +59,7 @@ from ._core import (
     Material,
     Prony,
     Scene,
+    Shift,
     Sphere,
     __version__,
 )
@@ -77,6 +79,7 @@ __all__ = [
     "Material",
     "Prony",
     "Scene",
+    "Shift",
     "Sphere",
     "angle_curve",
     "catalogue",

@@ -23,8 +23,10 @@ use pyo3::types::{PyDict, PyTuple};
 
 use mdr_impact::error::escape_text;
 use mdr_impact::io::scene::Scene as RsScene;
+use mdr_impact::io::scene::{shifted_material, temperature_without_shift};
 use mdr_impact::model::bodies::Side;
 use mdr_impact::model::geometry::{Cap, Shape, ShapeKeys};
+use mdr_impact::model::material::shift::ShiftLaw;
 use mdr_impact::model::material::{BulkInput, BulkProny, BulkRheology, ShearProny};
 use mdr_impact::{
     apps::batch, apps::curve, apps::dem, io::output, model::tolerances, report::catalogue,
@@ -32,7 +34,9 @@ use mdr_impact::{
     Resolution, SolveOptions, SolverKind, Sphere as RsSphere, StandardSolid, Target, TwoBodies,
 };
 
-use materials::{body_material, material_object, GeneralMaterial, Material, Prony};
+use materials::{
+    body_material, material_object, material_shift, GeneralMaterial, Material, Prony, Shift,
+};
 use oblique::{angle_curve_values, oblique_values};
 use reports::{curve_values, dem_report, fit_report, prony_report};
 use result::ImpactResult;
@@ -154,6 +158,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fit_report, m)?)?;
     m.add_class::<Prony>()?;
     m.add_class::<Material>()?;
+    m.add_class::<Shift>()?;
     m.add_class::<GeneralMaterial>()?;
     m.add_class::<Sphere>()?;
     m.add_class::<Indenter>()?;

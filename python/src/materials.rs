@@ -90,33 +90,45 @@ impl Prony {
 
 /// The paper's standard solid: shear `G(t) = g_inf + g_1 exp(-t g_1 / eta)` (Pa, Pa s) with an
 /// elastic bulk given by the static Poisson ratio `poisson` (`-1 < nu <= 0.5`, 0.5:
-/// incompressible) or the bulk modulus `k_0` (Pa), exactly one of them.
+/// incompressible) or the bulk modulus `k_0` (Pa), exactly one of them. `g_inf = 0` (with
+/// `g_1 > 0`, `eta > 0`) is a Maxwell fluid, which has no groups (its `poisson` must be 0.5 or a
+/// `k_0` given). `shift` (a `Shift`) is applied by a `Scene` at its temperature.
 #[pyclass(frozen, eq, module = "mdr_impact")]
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Material {
     inner: RsMaterial,
     /// The standard solid's view of `inner` (built by a standard-solid constructor).
     solid: StandardSolid,
+    /// The time–temperature shift law (`[material.shift]`), applied by a `Scene`.
+    shift: Option<ShiftLaw>,
 }
 
 impl Material {
     /// The Python `Material` of a material of the standard solid's shape.
     pub(crate) fn of(inner: RsMaterial) -> Option<Self> {
-        let solid = inner.as_standard_solid()?;
-        Some(Self { inner, solid })
+        // a Maxwell fluid (g_inf = 0) keeps its parameters, though it has no groups
+        let solid = inner
+            .as_standard_solid()
+            .or_else(|| inner.written_standard_solid())?;
+        Some(Self {
+            inner,
+            solid,
+            shift: None,
+        })
     }
 }
 
 #[pymethods]
 impl Material {
     #[new]
-    #[pyo3(signature = (g_inf, g_1, eta, *, poisson = None, k_0 = None))]
+    #[pyo3(signature = (g_inf, g_1, eta, *, poisson = None, k_0 = None, shift = None))]
     fn new(
         g_inf: f64,
         g_1: f64,
         eta: f64,
         poisson: Option<f64>,
         k_0: Option<f64>,
+        shift: Option<PyRef<'_, Shift>>,
     ) -> PyResult<Self> {
         let inner = match (poisson, k_0) {
             (Some(nu), None) => ok(RsMaterial::with_poisson(g_inf, g_1, eta, nu))?,
@@ -126,9 +138,16 @@ impl Material {
                 return Err(usage("missing poisson (-1 < nu <= 0.5) or k_0 (Pa)".into()))
             }
         };
-        Self::of(inner).ok_or_else(|| {
+        let mut m = Self::of(inner).ok_or_else(|| {
             usage("internal: a standard solid without the standard solid's shape".into())
-        })
+        })?;
+        m.shift = shift.map(|s| s.law);
+        Ok(m)
+    }
+    /// The time–temperature shift law (a `Shift`), or `None`.
+    #[getter]
+    fn shift(&self) -> Option<Shift> {
+        self.shift.map(|law| Shift { law })
     }
     /// Relaxed shear modulus `G_inf` (Pa).
     #[getter]
@@ -170,8 +189,8 @@ impl Material {
     }
     /// The equivalent incompressible relaxation function `G_eq(t)` (docs/theory.md §2) as a
     /// `Prony` (Pa, s).
-    fn equivalent_relaxation(&self) -> Prony {
-        Prony::of(&self.solid.equivalent_relaxation())
+    fn equivalent_relaxation(&self) -> PyResult<Prony> {
+        Ok(Prony::of(&ok(self.inner.equivalent_relaxation())?))
     }
     /// This standard solid as a `GeneralMaterial` (one shear term).
     fn general(&self) -> GeneralMaterial {
@@ -182,6 +201,7 @@ impl Material {
         GeneralMaterial {
             inner: RsMaterial::general(self.inner.shear().clone(), bulk)
                 .expect("a validated shear series and resolved bulk"),
+            shift: self.shift,
         }
     }
     fn __repr__(&self) -> String {
@@ -200,23 +220,29 @@ impl Material {
 
 /// A general linear-viscoelastic solid (docs/theory.md §8): the shear series `shear` (a `Prony`
 /// with `relaxed = g_inf`, terms `(g_i, tau_i)`) and exactly one bulk: `bulk` (a `Prony`,
-/// `relaxed = k_inf`, terms `(k_j, theta_j)`), `k_0` (Pa), `poisson` or `incompressible=True`.
+/// `relaxed = k_inf`, terms `(k_j, theta_j)`), `k_0` (Pa), `poisson` or `incompressible=True`;
+/// `g_inf = 0` with a term is a viscoelastic liquid. `shift` (a `Shift`) is applied by a `Scene`
+/// at its temperature.
 #[pyclass(frozen, eq, module = "mdr_impact")]
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct GeneralMaterial {
     inner: RsMaterial,
+    /// The time–temperature shift law (`[material.shift]`), applied by a `Scene`.
+    shift: Option<ShiftLaw>,
 }
 
 #[pymethods]
 impl GeneralMaterial {
     #[new]
-    #[pyo3(signature = (shear, *, bulk = None, k_0 = None, poisson = None, incompressible = false))]
+    #[pyo3(signature = (shear, *, bulk = None, k_0 = None, poisson = None, incompressible = false,
+        shift = None))]
     fn new(
         shear: PyRef<'_, Prony>,
         bulk: Option<PyRef<'_, Prony>>,
         k_0: Option<f64>,
         poisson: Option<f64>,
         incompressible: bool,
+        shift: Option<PyRef<'_, Shift>>,
     ) -> PyResult<Self> {
         let given = [
             bulk.is_some(),
@@ -240,7 +266,13 @@ impl GeneralMaterial {
         };
         Ok(Self {
             inner: ok(RsMaterial::general(s, rheology))?,
+            shift: shift.map(|s| s.law),
         })
+    }
+    /// The time–temperature shift law (a `Shift`), or `None`.
+    #[getter]
+    fn shift(&self) -> Option<Shift> {
+        self.shift.map(|law| Shift { law })
     }
     /// The shear series `G(t)` as validated (terms sorted by time, equal times merged, zero
     /// moduli dropped).
@@ -294,6 +326,69 @@ impl GeneralMaterial {
     }
 }
 
+/// The shift law of a Python material object (`Material`, `GeneralMaterial`), if any.
+pub(crate) fn material_shift(m: &Bound<'_, PyAny>) -> Option<ShiftLaw> {
+    if let Ok(m) = m.cast::<Material>() {
+        return m.get().shift;
+    }
+    m.cast::<GeneralMaterial>().ok().and_then(|m| m.get().shift)
+}
+
+/// A time–temperature shift law of a thermorheologically simple material (docs/theory.md §13,
+/// a scene's `[material.shift]`): `Shift.wlf(c1, c2, t_ref)` (`c1` dimensionless, `c2` in K,
+/// `t_ref` in °C) or `Shift.arrhenius(activation_energy, t_ref)` (J/mol, °C). At temperature
+/// `T` every relaxation time of shear and bulk is multiplied by `a_T`.
+#[pyclass(frozen, eq, module = "mdr_impact")]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Shift {
+    pub(crate) law: ShiftLaw,
+}
+
+#[pymethods]
+impl Shift {
+    /// WLF: `log10 a_T = -c1 (T - t_ref) / (c2 + T - t_ref)`, valid above `t_ref - c2`.
+    #[staticmethod]
+    fn wlf(c1: f64, c2: f64, t_ref: f64) -> PyResult<Self> {
+        Ok(Self {
+            law: ok(ShiftLaw::wlf(c1, c2, t_ref))?,
+        })
+    }
+    /// Arrhenius: `log10 a_T = E_a / (R ln 10) (1/T_K - 1/T_ref,K)`.
+    #[staticmethod]
+    fn arrhenius(activation_energy: f64, t_ref: f64) -> PyResult<Self> {
+        Ok(Self {
+            law: ok(ShiftLaw::arrhenius(activation_energy, t_ref))?,
+        })
+    }
+    /// `"wlf"` or `"arrhenius"`.
+    #[getter]
+    fn kind(&self) -> &'static str {
+        self.law.kind()
+    }
+    /// Reference temperature (°C).
+    #[getter]
+    fn t_ref(&self) -> f64 {
+        self.law.t_ref()
+    }
+    /// `log10 a_T` at `temperature` (°C); an error at or below a WLF law's singularity.
+    fn log10_a(&self, temperature: f64) -> PyResult<f64> {
+        ok(self.law.log10_a(temperature))
+    }
+    fn __repr__(&self) -> String {
+        match self.law {
+            ShiftLaw::Wlf { c1, c2, t_ref } => {
+                format!("Shift.wlf(c1={c1:?}, c2={c2:?}, t_ref={t_ref:?})")
+            }
+            ShiftLaw::Arrhenius {
+                activation_energy,
+                t_ref,
+            } => {
+                format!("Shift.arrhenius(activation_energy={activation_energy:?}, t_ref={t_ref:?})")
+            }
+        }
+    }
+}
+
 /// A Python material object (`Material`, `GeneralMaterial`) as the library's body material.
 pub(crate) fn body_material(m: &Bound<'_, PyAny>) -> PyResult<BodyMaterial> {
     if let Ok(m) = m.cast::<Material>() {
@@ -316,6 +411,13 @@ pub(crate) fn material_object(py: Python<'_>, m: &BodyMaterial) -> PyResult<Opti
     };
     Ok(Some(match Material::of(m.clone()) {
         Some(s) if m.is_written_as_standard_solid() => Py::new(py, s)?.into_any(),
-        _ => Py::new(py, GeneralMaterial { inner: m.clone() })?.into_any(),
+        _ => Py::new(
+            py,
+            GeneralMaterial {
+                inner: m.clone(),
+                shift: None,
+            },
+        )?
+        .into_any(),
     }))
 }

@@ -134,6 +134,8 @@ pub(crate) struct Body {
     inner: RsBody,
     /// `profile="sphere"`: the exact cap.
     exact: bool,
+    /// The material's shift law, applied by a `Scene` at its temperature.
+    shift: Option<ShiftLaw>,
 }
 
 /// `e` without the body it is placed at (`Error::In`): a body is named only once it is placed in
@@ -146,15 +148,29 @@ pub(crate) fn unsided(e: mdr_impact::Error) -> mdr_impact::Error {
 }
 
 impl Body {
-    /// The same body as body `side` of a collision.
-    fn as_side(&self, side: Side) -> PyResult<RsBody> {
+    /// The same body as body `side` of a collision, its material shifted to `temperature`
+    /// (°C; the law's `t_ref` when `None`) when it has a shift law (`log10 a_T` then pushed to
+    /// `shifts` with the scene's table name).
+    fn as_side(
+        &self,
+        side: Side,
+        temperature: Option<f64>,
+        shifts: &mut Vec<(String, f64)>,
+    ) -> PyResult<RsBody> {
         let b = &self.inner;
-        ok(RsBody::new(
-            side,
-            b.mass(),
-            b.radius(),
-            b.material().clone(),
-        ))
+        let table = match side {
+            Side::A => "[[body]] A [body.material]",
+            Side::B => "[[body]] B [body.material]",
+        };
+        let material = match (b.material(), &self.shift) {
+            (BodyMaterial::Viscoelastic(m), Some(law)) => {
+                let (m, log10_a) = ok(shifted_material(m, law, temperature, table))?;
+                shifts.push((table.to_string(), log10_a));
+                BodyMaterial::Viscoelastic(m)
+            }
+            (m, _) => m.clone(),
+        };
+        ok(RsBody::new(side, b.mass(), b.radius(), material))
     }
 }
 
@@ -172,6 +188,7 @@ impl Body {
         profile: &str,
     ) -> PyResult<Self> {
         let exact = exact_profile(profile)?;
+        let shift = material.and_then(material_shift);
         let material = match (material, rigid) {
             (Some(m), false) => body_material(m)?,
             (None, true) => BodyMaterial::Rigid,
@@ -197,7 +214,11 @@ impl Body {
             }
         }
         .map_err(|e| py_err(unsided(e)))?;
-        Ok(Self { inner, exact })
+        Ok(Self {
+            inner,
+            exact,
+            shift,
+        })
     }
     /// Mass (kg), possibly `inf`.
     #[getter]
@@ -245,7 +266,8 @@ impl Body {
 /// `1e-12 <= rtol <= 0.1`, default `1e-6`), and optionally an explicit MDR resolution
 /// `elements`, `steps` (counts); the `[output]` paths `history_csv` (TOML key `history`) and
 /// `plot` are kept for `to_toml` (the files are written by `mdr-impact run`, not by
-/// `Scene.run`).
+/// `Scene.run`); `temperature` (°C) shifts every material given with a `shift` law (default:
+/// each law's `t_ref`), as `[impact] temperature` does.
 #[pyclass(frozen, eq, module = "mdr_impact")]
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Scene {
@@ -257,7 +279,7 @@ impl Scene {
     #[new]
     #[pyo3(signature = (*, velocity, sphere = None, material = None, bodies = None,
         indenter = None, solver = "auto", rtol = tolerances::DEFAULT_RTOL, elements = None, steps = None,
-        history_csv = None, plot = None))]
+        history_csv = None, plot = None, temperature = None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         velocity: f64,
@@ -271,9 +293,18 @@ impl Scene {
         steps: Option<usize>,
         history_csv: Option<PathBuf>,
         plot: Option<PathBuf>,
+        temperature: Option<f64>,
     ) -> PyResult<Self> {
-        let half_space = |m: &Bound<'_, PyAny>| match body_material(m)? {
-            BodyMaterial::Viscoelastic(m) => Ok(m),
+        let mut shifts: Vec<(String, f64)> = Vec::new();
+        let mut half_space = |m: &Bound<'_, PyAny>| match body_material(m)? {
+            BodyMaterial::Viscoelastic(v) => match material_shift(m) {
+                Some(law) => {
+                    let (v, log10_a) = ok(shifted_material(&v, &law, temperature, "[material]"))?;
+                    shifts.push(("[material]".to_string(), log10_a));
+                    Ok(v)
+                }
+                None => Ok(v),
+            },
             BodyMaterial::Rigid => Err(usage("a rigid half-space has no compliance".into())),
         };
         let impact = match (sphere, indenter, material, bodies) {
@@ -298,7 +329,10 @@ impl Scene {
                 ok(Impact::shaped(nominal, ind.shape, velocity, half_space(m)?))?
             }
             (None, None, None, Some((a, b))) => {
-                let pair = ok(TwoBodies::new(a.as_side(Side::A)?, b.as_side(Side::B)?))?;
+                let pair = ok(TwoBodies::new(
+                    a.as_side(Side::A, temperature, &mut shifts)?,
+                    b.as_side(Side::B, temperature, &mut shifts)?,
+                ))?;
                 let impact = ok(Impact::with_bodies(pair, velocity))?;
                 if a.exact || b.exact {
                     let cap = |body: &Body| Cap {
@@ -320,6 +354,9 @@ impl Scene {
                 ))
             }
         };
+        if let (Some(t), true) = (temperature, shifts.is_empty()) {
+            return Err(py_err(temperature_without_shift(t)));
+        }
         let mut options = options(solver, rtol)?;
         options.resolution = match (elements, steps) {
             (Some(elements), Some(steps)) => Some(Resolution { elements, steps }),
@@ -339,13 +376,25 @@ impl Scene {
                 options,
                 history_csv,
                 plot,
-                temperature: None,
-                shifts: Vec::new(),
+                temperature,
+                shifts,
                 oblique: Default::default(),
             },
         })
     }
 
+    /// `[impact] temperature` (°C), or `None`.
+    #[getter]
+    fn temperature(&self) -> Option<f64> {
+        self.inner.temperature
+    }
+    /// The shift factors applied to the materials with a shift law: a list of pairs
+    /// `(table, log10 a_T)` (`"[material]"`, `"[[body]] A [body.material]"`, ...), as `run`
+    /// prints them.
+    #[getter]
+    fn shifts(&self) -> Vec<(String, f64)> {
+        self.inner.shifts.clone()
+    }
     /// Read a scene file (TOML); a Prony table `file` is relative to the scene's folder.
     #[staticmethod]
     fn load(path: PathBuf) -> PyResult<Self> {
@@ -484,10 +533,12 @@ impl Scene {
                 Body {
                     inner: b.a().clone(),
                     exact: exact[0],
+                    shift: None, // the material as solved: already at the temperature
                 },
                 Body {
                     inner: b.b().clone(),
                     exact: exact[1],
+                    shift: None,
                 },
             )
         })

@@ -249,7 +249,8 @@ impl CurveRow {
 /// The elastic limits of the curve and where the material leaves them (see the module docs).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Limits {
-    /// Plane-strain modulus of the relaxed limit `v0 -> 0`, `E* = 4 G_eq(inf)` (Pa).
+    /// Plane-strain modulus of the relaxed limit `v0 -> 0`, `E* = 4 G_eq(inf)` (Pa); 0 for a
+    /// viscoelastic liquid (`g_inf = 0`), which has no relaxed limit.
     pub relaxed_modulus: f64,
     /// Plane-strain modulus of the glassy limit `v0 -> inf`, `E* = 4 G_eq(0)` (Pa).
     pub glassy_modulus: f64,
@@ -459,11 +460,15 @@ pub fn summary(curve: &Curve, written: Option<&Written>) -> String {
     };
     line(
         "relaxed limit (v0 -> 0)",
-        format!(
-            "E* = {:.4e} Pa, e -> 1{}",
-            l.relaxed_modulus,
-            at("slowest", l.relaxed_crossover)
-        ),
+        if l.relaxed_modulus == 0.0 {
+            "does not apply: g_inf = 0, a viscoelastic liquid has no relaxed modulus".to_string()
+        } else {
+            format!(
+                "E* = {:.4e} Pa, e -> 1{}",
+                l.relaxed_modulus,
+                at("slowest", l.relaxed_crossover)
+            )
+        },
     );
     line(
         "glassy limit (v0 -> inf)",
@@ -509,8 +514,13 @@ pub fn validity_warning(rows: &[CurveRow]) -> Option<String> {
 /// only; `path` names the file in errors (the caller writes it, atomically).
 pub fn cor_curve_svg(path: &Path, curve: &Curve, log: bool, name: &str) -> Result<String> {
     let (x0, x1) = velocity_span(path, &curve.rows.iter().map(|r| r.v0).collect::<Vec<_>>())?;
+    let label = if curve.limits.relaxed_modulus == 0.0 {
+        "elastic limit (glassy v0 -> inf; a liquid has no relaxed limit)"
+    } else {
+        "elastic limits (relaxed v0 -> 0, glassy v0 -> inf)"
+    };
     let mut lines: Vec<CorLine> = vec![(
-        "elastic limits (relaxed v0 -> 0, glassy v0 -> inf)".to_string(),
+        label.to_string(),
         vec![(x0, 1.0), (x1, 1.0)],
         RGBColor(120, 120, 120),
         2,

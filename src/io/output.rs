@@ -365,6 +365,14 @@ pub fn summary(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> String {
             ),
         ),
     }
+    if impact.target().relaxes_to_zero() {
+        line(
+            "relaxed limits",
+            "do not apply: g_inf = 0, a viscoelastic liquid (no groups of Eq. 11, no relaxed \
+             Hertz limit)"
+                .to_string(),
+        );
+    }
     line("solver", o.solver.to_string());
     if let Some(why) = solver_reason(opts, o) {
         let label = match opts.solver {

@@ -50,6 +50,13 @@ impl BodyMaterial {
         self.material().map_or(f64::INFINITY, Material::g_inf)
     }
 
+    /// The material's modulus scale ([`Material::modulus_scale`]: `g_inf`, or the glassy shear
+    /// modulus of a liquid) (Pa), `inf` when rigid.
+    pub fn modulus_scale(&self) -> f64 {
+        self.material()
+            .map_or(f64::INFINITY, Material::modulus_scale)
+    }
+
     /// True for a rigid body.
     pub fn is_rigid(&self) -> bool {
         matches!(self, BodyMaterial::Rigid)
@@ -223,10 +230,15 @@ impl TwoBodies {
         &self.combined
     }
 
-    /// The modulus scale of the canonical units (Pa): the bodies' relaxed shear moduli combined
-    /// like compliances (a rigid body drops out, so a rigid B gives A's `G_inf` exactly).
+    /// The modulus scale of the canonical units (Pa): the bodies' modulus scales
+    /// ([`BodyMaterial::modulus_scale`]: the relaxed shear moduli, or the glassy one of a
+    /// liquid) combined like compliances (a rigid body drops out, so a rigid B gives A's scale
+    /// exactly).
     pub fn modulus_scale(&self) -> f64 {
-        harmonic(self.a.material.g_inf(), self.b.material.g_inf())
+        harmonic(
+            self.a.material.modulus_scale(),
+            self.b.material.modulus_scale(),
+        )
     }
 
     /// Velocities of A and B after the impact (m/s, along the line of approach, positive in

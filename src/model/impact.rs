@@ -11,7 +11,10 @@
 //!
 //! The target ([`Target`]) is a half-space of any [`Material`] or two colliding bodies; `G_inf` is
 //! the relaxed shear modulus `g_inf`, and the dimensionless groups of Eq. (11) exist for a
-//! half-space of the standard solid's shape only ([`Impact::groups`]).
+//! half-space of the standard solid's shape only ([`Impact::groups`]). A viscoelastic liquid
+//! (`g_inf = 0`) has no relaxed modulus: its scale `G_inf` is the glassy shear modulus `G(0)`
+//! instead ([`Target::modulus_scale`], docs/theory.md §14), and its relaxed limits do not exist
+//! ([`Target::relaxes_to_zero`]).
 
 use crate::error::{check, Error, Result};
 use crate::model::bodies::TwoBodies;
@@ -67,7 +70,7 @@ pub struct Scales {
     pub velocity: f64,
     /// Contact-radius scale `sqrt(R L)` (m).
     pub radius: f64,
-    /// Modulus scale `G_inf` (Pa).
+    /// Modulus scale `G_inf` (Pa): the relaxed shear modulus, or the glassy one of a liquid.
     pub modulus: f64,
 }
 
@@ -84,12 +87,25 @@ pub enum Target {
 
 impl Target {
     /// The modulus scale `G_inf` of the canonical units (Pa): the relaxed shear modulus
-    /// `G(inf)`; for two bodies their relaxed shear moduli combined like compliances
-    /// ([`TwoBodies::modulus_scale`]).
-    pub fn g_inf(&self) -> f64 {
+    /// `G(inf)`, or for a viscoelastic liquid (`g_inf = 0`) the glassy `G(0)`
+    /// ([`Material::modulus_scale`], docs/theory.md §14); for two bodies their scales combined
+    /// like compliances ([`TwoBodies::modulus_scale`]).
+    pub fn modulus_scale(&self) -> f64 {
         match self {
-            Target::HalfSpace(m) => m.g_inf(),
+            Target::HalfSpace(m) => m.modulus_scale(),
             Target::TwoBodies(b) => b.modulus_scale(),
+        }
+    }
+
+    /// True when the relaxed equivalent modulus `G_eq(inf)` is zero: a half-space of a
+    /// viscoelastic liquid, or two bodies of which one is a liquid. The relaxed limits (Hertz
+    /// with the relaxed modulus, the groups of Eq. 11, the DEM relaxed law) do not apply.
+    pub fn relaxes_to_zero(&self) -> bool {
+        match self {
+            Target::HalfSpace(m) => m.is_liquid(),
+            Target::TwoBodies(b) => [b.a(), b.b()]
+                .iter()
+                .any(|body| body.material().material().is_some_and(Material::is_liquid)),
         }
     }
 }
@@ -222,11 +238,16 @@ impl Impact {
         let imp = self;
         let inputs = || {
             format!(
-                "mass {:e} kg, {}, velocity {:e} m/s, relaxed shear modulus {:e} Pa",
+                "mass {:e} kg, {}, velocity {:e} m/s, {} {:e} Pa",
                 imp.sphere.mass,
                 imp.shape.describe(),
                 imp.velocity,
-                imp.target.g_inf()
+                if imp.target.relaxes_to_zero() {
+                    "modulus scale (glassy shear modulus of the liquid)"
+                } else {
+                    "relaxed shear modulus"
+                },
+                imp.target.modulus_scale()
             )
         };
         let out = |what, value| Error::OutOfScale {
@@ -252,7 +273,9 @@ impl Impact {
         // the series the solvers get: every modulus and time finite and positive in canonical
         // units (extreme times or moduli can underflow or overflow when scaled)
         let c = imp.canonical_relaxation();
-        if !(c.relaxed.is_finite() && c.relaxed > 0.0) {
+        // a liquid relaxes to exactly zero; anything else must stay positive when scaled
+        let liquid = imp.equivalent.relaxed == 0.0;
+        if !(c.relaxed.is_finite() && (c.relaxed > 0.0 || liquid)) {
             return Err(out("G_eq(inf) over the relaxed modulus", c.relaxed));
         }
         for t in &c.terms {
@@ -398,7 +421,7 @@ impl Impact {
     /// `L = (m v^2 / (G sqrt(R)))^(2/5)` and contact radius `sqrt(R L)`).
     pub fn scales(&self) -> Scales {
         let (m, v) = (self.sphere.mass, self.velocity);
-        let g = self.target.g_inf();
+        let g = self.target.modulus_scale();
         let (length, radius, _) = self.shape.canonical(m, v, g);
         let ln_l = length.ln();
         Scales {
@@ -415,12 +438,13 @@ impl Impact {
     /// The indenter's shape in canonical units ([`Shape::canonical`]).
     pub fn canonical_geometry(&self) -> crate::model::geometry::Geometry {
         self.shape
-            .canonical(self.sphere.mass, self.velocity, self.target.g_inf())
+            .canonical(self.sphere.mass, self.velocity, self.target.modulus_scale())
             .2
     }
 
     /// Equivalent relaxation function in canonical units (moduli / `G_inf`, times / `L/v0`),
-    /// `G_inf` the relaxed shear modulus (`g_inf` of a general material).
+    /// `G_inf` the modulus scale ([`Target::modulus_scale`]: `g_inf`, or the glassy shear
+    /// modulus of a liquid).
     pub fn canonical_relaxation(&self) -> Prony {
         let s = self.scales();
         self.equivalent.scaled(s.modulus, s.time)

@@ -78,8 +78,8 @@ fn material(out: &mut Vec<String>, name: &str, m: &Material, v0: f64) {
         ("glassy bulk modulus", m.bulk_glassy()),
     ];
     for (what, x) in shear {
-        // an incompressible bulk is infinite on purpose
-        if x.is_finite() && !(lo..=hi).contains(&x) {
+        // an incompressible bulk is infinite on purpose, and a liquid relaxes to zero
+        if x.is_finite() && x != 0.0 && !(lo..=hi).contains(&x) {
             out.push(format!(
                 "{name}: {what} {x:.3e} Pa is outside {lo:.0e}-{hi:.0e} Pa of solids: check the \
                  units (Pa, not MPa or GPa)"

@@ -45,7 +45,15 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
         return Ok(o);
     }
     let contact = impact.contact()?;
-    let mut canonical = solver_for(opts.solver).solve(&contact, opts)?;
+    let mut canonical = solver_for(opts.solver).solve(&contact, opts).map_err(|e| {
+        if impact.target().relaxes_to_zero() {
+            // the solvers fail where a liquid relaxes fast against the contact: the sphere
+            // then comes to rest in it (e -> 0, contact time -> inf as g_inf -> 0+)
+            e.at(LIQUID_PLACE)
+        } else {
+            e
+        }
+    })?;
     check_outcome(&canonical)?;
     if canonical.cor > 1.0 {
         let o = canonical.get_mut();
@@ -55,6 +63,11 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
     }
     Ok(canonical.to_si(&impact.scales()))
 }
+
+/// Where a failed solve of a viscoelastic liquid (`g_inf = 0`) is placed ([`Error::at`]): what
+/// usually makes it fail (docs/theory.md §14).
+pub const LIQUID_PLACE: &str = "g_inf = 0, a viscoelastic liquid that may hold the sphere (the \
+    CoR tends to 0 and the contact time to inf when it relaxes fast against the contact)";
 
 /// The solver of a kind: the one place that maps the table's names to implementations.
 pub fn solver_for(kind: SolverKind) -> &'static dyn ImpactSolver {

@@ -194,8 +194,19 @@ pub fn run(
     modulus: ModulusChoice,
     progress: &(dyn Fn() + Sync),
 ) -> Result<DemReport> {
+    let liquid = impact.target().relaxes_to_zero();
+    if liquid && modulus == ModulusChoice::Relaxed {
+        return Err(Error::NotSupported {
+            solver: "dem",
+            what: "--modulus relaxed does not apply: g_inf = 0 (a viscoelastic liquid has no \
+                   relaxed modulus); use --modulus glassy or fit"
+                .into(),
+        });
+    }
     let c = curve::run(impact, opts, range, progress)?;
     let e_star = match modulus {
+        // a liquid's fit starts from the glassy stiffness (it has no relaxed one)
+        ModulusChoice::Fit if liquid => c.limits.glassy_modulus,
         ModulusChoice::Relaxed | ModulusChoice::Fit => c.limits.relaxed_modulus,
         ModulusChoice::Glassy => c.limits.glassy_modulus,
     };

@@ -96,8 +96,9 @@ pub enum BulkChoice {
     Incompressible,
     /// `poisson = nu`: elastic bulk from the relaxed shear modulus (shear data with `--nu`).
     Poisson(f64),
-    /// Tensile data converted with a constant `nu < 0.5`: the bulk series proportional to the
-    /// shear series, `K(t) = G(t) 2 (1 + nu) / (3 (1 - 2 nu))`.
+    /// Tensile data converted with a constant `nu < 0.5` (or shear data with `--nu` and
+    /// `g_inf = 0`): the bulk series proportional to the shear series,
+    /// `K(t) = G(t) 2 (1 + nu) / (3 (1 - 2 nu))`.
     Proportional(f64),
 }
 
@@ -325,10 +326,11 @@ pub fn fit(data: &DmaData, opts: &PronyOptions) -> Result<PronyReport> {
     let points = reduced(&isotherms, &log_a);
     let series = prony_fit::fit_prony(&points, opts.max_terms)?;
     let rms_rel_error = series.rms_rel_error(&points);
-    if series.g_inf == 0.0 {
+    let liquid = series.g_inf == 0.0;
+    if liquid {
         warnings.push(
-            "g_inf = 0: the data show no relaxed plateau at low frequency; the scene loader \
-             needs g_inf > 0 (measure at lower reduced frequencies or set g_inf by hand)"
+            "g_inf = 0: the data show no relaxed plateau at low frequency, so the material is \
+             written as a viscoelastic liquid (its relaxed limits do not apply)"
                 .into(),
         );
     }
@@ -336,6 +338,14 @@ pub fn fit(data: &DmaData, opts: &PronyOptions) -> Result<PronyReport> {
     let bulk = match (opts.modulus, opts.nu) {
         (_, None) => BulkChoice::Incompressible,
         (_, Some(_)) if nu == 0.5 => BulkChoice::Incompressible,
+        // a static Poisson ratio would give K_0 = 0 with g_inf = 0: keep nu constant in time
+        (ModulusKind::Shear, Some(nu)) if liquid => {
+            warnings.push(format!(
+                "g_inf = 0: --nu {nu} written as a constant Poisson ratio (bulk series \
+                 proportional to the shear series), since a static ratio would give K_0 = 0"
+            ));
+            BulkChoice::Proportional(nu)
+        }
         (ModulusKind::Shear, Some(nu)) => BulkChoice::Poisson(nu),
         (ModulusKind::Tensile, Some(nu)) => BulkChoice::Proportional(nu),
     };

@@ -69,7 +69,7 @@ pub fn material_toml(r: &PronyReport) -> String {
             let f = 2.0 * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu));
             let _ = writeln!(
                 s,
-                "# constant Poisson ratio {nu:?} (the tensile conversion): K(t) = G(t) * {f:?}"
+                "# constant Poisson ratio {nu:?} in time: K(t) = G(t) * {f:?}"
             );
             let _ = writeln!(s, "k_inf = {:?}    # Pa", r.series.g_inf * f);
             let _ = writeln!(s, "terms = [    # [k_j (Pa), theta_j (s)]");

@@ -298,11 +298,7 @@ impl Scene {
         if let Some(t) = temperature
             && shifts.is_empty()
         {
-            return Err(scene_error(format!(
-                "[impact] temperature = {t}: no material has a [material.shift] law \
-                     (wlf = {{ c1, c2, t_ref }} or arrhenius = {{ activation_energy, t_ref }}), \
-                     so its relaxation times at another temperature are unknown"
-            )));
+            return Err(temperature_without_shift(t));
         }
         let oblique = oblique_of(&raw)?;
         let mut options = SolveOptions::default();
@@ -606,16 +602,39 @@ fn material_of(
         v = v.with_density(rho).map_err(|e| e.at(table.to_string()))?;
     }
     if let Some(law) = m.shift {
-        let t = at.celsius.unwrap_or(law.t_ref());
-        let log10_a = law
-            .log10_a(t)
-            .map_err(|e| e.at(format!("{table} shift at [impact] temperature")))?;
-        v = v
-            .time_shifted(10f64.powf(log10_a))
-            .map_err(|e| e.at(format!("{table} shift")))?;
+        let (shifted, log10_a) = shifted_material(&v, &law, at.celsius, table)?;
+        v = shifted;
         at.shifts.push((table.to_string(), log10_a));
     }
     Ok(BodyMaterial::Viscoelastic(v))
+}
+
+/// `material` at `temperature` (°C; the law's `t_ref` when `None`) by its shift `law`: every
+/// relaxation time times `a_T`, with `log10 a_T`; errors placed at `table`. The one path of the
+/// scene file and the Python binding.
+pub fn shifted_material(
+    material: &Material,
+    law: &ShiftLaw,
+    temperature: Option<f64>,
+    table: &str,
+) -> Result<(Material, f64)> {
+    let t = temperature.unwrap_or(law.t_ref());
+    let log10_a = law
+        .log10_a(t)
+        .map_err(|e| e.at(format!("{table} shift at [impact] temperature")))?;
+    let shifted = material
+        .time_shifted(10f64.powf(log10_a))
+        .map_err(|e| e.at(format!("{table} shift")))?;
+    Ok((shifted, log10_a))
+}
+
+/// The error of a temperature given without any shift law (scene and Python binding).
+pub fn temperature_without_shift(t: f64) -> Error {
+    scene_error(format!(
+        "[impact] temperature = {t}: no material has a [material.shift] law \
+         (wlf = {{ c1, c2, t_ref }} or arrhenius = {{ activation_energy, t_ref }}), \
+         so its relaxation times at another temperature are unknown"
+    ))
 }
 
 /// [`material_of`] without the density.

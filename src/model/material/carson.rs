@@ -19,7 +19,8 @@
 //!   `g / 4 + (9/4) g k / (3k + 4g) = g (3k + g) / (3k + 4g)`, the elastic formula on the term;
 //! - the zeros of `D` are the new poles. On the real axis `D` is a sum of increasing terms, so
 //!   between two consecutive distinct poles of `D` it rises from `-inf` to `+inf`, and between the
-//!   slowest pole and `s = 0` from `-inf` to `D(0) = 3 k_inf + 4 g_inf > 0`; left of the fastest
+//!   slowest pole and `s = 0` from `-inf` to `D(0) = 3 k_inf + 4 g_inf >= 0` (no zero there when
+//!   `D(0) = 0`: both moduli relax to zero and `H` vanishes at `s = 0`); left of the fastest
 //!   pole it stays above the glassy `3 K_0 + 4 G_0 > 0`. Exactly one zero per distinct pole of
 //!   `D`, each bracketed. At a zero `z = -1/T`, `3K = -4G`, so the residue of `H` is
 //!   `G K / D'(z) = -(4/3) G^2 / D'(z) <= 0` and the time-domain coefficient is
@@ -100,9 +101,14 @@ pub fn equivalent_relaxation(material: &Material) -> Result<Prony> {
         BulkRheology::Elastic(k) => (*k, &[]),
         BulkRheology::Prony(p) => (p.k_inf(), p.terms()),
     };
-    let relaxed = g_inf * (3.0 * k_inf + g_inf) / (3.0 * k_inf + 4.0 * g_inf);
-    let poles = merge(shear.terms(), bulk_terms);
     let d0 = 3.0 * k_inf + 4.0 * g_inf;
+    // both moduli relax to zero (a liquid with a relaxing bulk): G_eq relaxes to zero too
+    let relaxed = if d0 == 0.0 {
+        0.0
+    } else {
+        g_inf * (3.0 * k_inf + g_inf) / (3.0 * k_inf + 4.0 * g_inf)
+    };
+    let poles = merge(shear.terms(), bulk_terms);
     let mut terms: Vec<(f64, f64)> = Vec::with_capacity(2 * poles.len());
     for p in &poles {
         if p.g > 0.0 {
@@ -123,7 +129,7 @@ pub fn equivalent_relaxation(material: &Material) -> Result<Prony> {
         d0,
     };
     // G_eq = G / 4 + (9/4) H, H = G K / (4G + 3K)
-    for m in 0..poles.len() {
+    for m in 0..ctx.brackets() {
         let zero = ctx.zero_after(m)?;
         terms.push((zero.tau, 2.25 * zero.coefficient));
     }
@@ -242,7 +248,11 @@ pub fn combine(a: &Prony, b: &Prony) -> Result<Prony> {
     };
     let (ta, tb) = (normalised(a), normalised(b));
     let (a0, b0) = (a.relaxed, b.relaxed);
-    let relaxed = a0 * b0 / (a0 + b0);
+    let relaxed = if a0 + b0 == 0.0 {
+        0.0 // two liquids
+    } else {
+        a0 * b0 / (a0 + b0)
+    };
     let poles = merge(&ta, &tb);
     let mut terms: Vec<(f64, f64)> = Vec::with_capacity(2 * poles.len());
     for p in &poles {
@@ -258,7 +268,7 @@ pub fn combine(a: &Prony, b: &Prony) -> Result<Prony> {
         beta: 1.0,
         d0: a0 + b0,
     };
-    for m in 0..poles.len() {
+    for m in 0..ctx.brackets() {
         let zero = ctx.zero_after(m)?;
         terms.push((zero.tau, zero.coefficient));
     }
@@ -407,6 +417,17 @@ impl Context<'_> {
             g_abs,
             k_abs,
             slope_scaled: ss,
+        }
+    }
+
+    /// The number of zeros of `D`: one per distinct pole, but none between the slowest pole
+    /// and `s = 0` when `D(0) = 0` (both inputs relax to zero): there `D` reaches zero only at
+    /// `s = 0`, where `H = P Q / D` vanishes with `P` and `Q` and has no pole.
+    fn brackets(&self) -> usize {
+        if self.d0 == 0.0 {
+            self.poles.len().saturating_sub(1)
+        } else {
+            self.poles.len()
         }
     }
 

@@ -78,7 +78,8 @@ impl Material {
     /// Standard solid from its shear parameters and the bulk modulus `k_0` (all Pa, `eta` in
     /// Pa s).
     ///
-    /// Ranges: `0 < g_inf < inf`, `0 <= g_1 < inf`, `0 <= eta < inf`, `0 < k_0 < inf`.
+    /// Ranges: `0 <= g_inf < inf`, `0 <= g_1 < inf`, `0 <= eta < inf`, `0 < k_0 < inf`;
+    /// `g_inf = 0` (a Maxwell fluid) needs `g_1 > 0` and `eta > 0`.
     pub fn new(g_inf: f64, g_1: f64, eta: f64, k_0: f64) -> Result<Self> {
         let k_0 = check("k_0", k_0, k_0 > 0.0, "0 < k_0 < inf (Pa)")?;
         Self::with_bulk(g_inf, g_1, eta, Bulk::Modulus(k_0))
@@ -87,12 +88,16 @@ impl Material {
     /// Standard solid from its shear parameters and the static Poisson ratio `nu` of Eq. (3).
     ///
     /// `-1 < nu <= 0.5`; `nu = 0.5` gives an incompressible material, otherwise
-    /// `K_0 = 2 G_inf (1 + nu) / (3 (1 - 2 nu))`.
+    /// `K_0 = 2 G_inf (1 + nu) / (3 (1 - 2 nu))` (so `nu = 0.5` only when `g_inf = 0`).
     pub fn with_poisson(g_inf: f64, g_1: f64, eta: f64, nu: f64) -> Result<Self> {
         let nu = check("nu", nu, nu > -1.0 && nu <= 0.5, "-1 < nu <= 0.5")?;
         let g_inf = check_g_inf(g_inf)?;
         if nu == 0.5 {
             return Self::with_bulk(g_inf, g_1, eta, Bulk::Incompressible);
+        }
+        if g_inf == 0.0 {
+            // the message of the general form
+            BulkInput::Poisson(nu).resolve(g_inf)?;
         }
         let k_0 = 2.0 * g_inf * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu));
         // For nu just above -1 or just below 0.5 the bulk modulus can leave the f64 range.
@@ -120,6 +125,14 @@ impl Material {
         let g_inf = check_g_inf(g_inf)?;
         let g_1 = check("g_1", g_1, g_1 >= 0.0, "0 <= g_1 < inf (Pa)")?;
         let eta = check("eta", eta, eta >= 0.0, "0 <= eta < inf (Pa s)")?;
+        if g_inf == 0.0 && !(g_1 > 0.0 && eta > 0.0) {
+            return Err(crate::Error::OutOfRange {
+                field: "g_inf",
+                value: g_inf,
+                allowed: "g_inf > 0 unless g_1 > 0 and eta > 0 (g_inf = 0 with a Maxwell term: \
+                          a viscoelastic liquid)",
+            });
+        }
         let bulk = match bulk {
             Bulk::Modulus(k) => {
                 BulkRheology::Elastic(check("k_0", k, k > 0.0, "0 < k_0 < inf (Pa)")?)
@@ -180,6 +193,23 @@ impl Material {
     /// assert_eq!(a.as_standard_solid(), b.as_standard_solid());
     /// ```
     pub fn as_standard_solid(&self) -> Option<StandardSolid> {
+        // a viscoelastic liquid has no relaxed modulus, so none of the standard solid's groups
+        if self.shear.is_liquid() {
+            return None;
+        }
+        self.standard_view()
+    }
+
+    /// The parameters `(g_inf, G_1, eta, bulk)` of a material built by a standard-solid
+    /// constructor, as a [`StandardSolid`], also for a Maxwell fluid (`g_inf = 0`), which
+    /// [`Material::as_standard_solid`] does not treat as one (its groups do not exist): for
+    /// display and bindings only. `None` when not written as a standard solid.
+    pub fn written_standard_solid(&self) -> Option<StandardSolid> {
+        self.written.and_then(|_| self.standard_view())
+    }
+
+    /// The standard solid's view of the shape, liquid or not (see [`Material::as_standard_solid`]).
+    fn standard_view(&self) -> Option<StandardSolid> {
         let bulk = match self.bulk {
             BulkRheology::Incompressible => Bulk::Incompressible,
             BulkRheology::Elastic(k) => Bulk::Modulus(k),
@@ -237,9 +267,24 @@ impl Material {
         &self.bulk
     }
 
-    /// Relaxed (static) shear modulus `G(inf) = g_inf` (Pa).
+    /// Relaxed (static) shear modulus `G(inf) = g_inf` (Pa); 0 for a viscoelastic liquid.
     pub fn g_inf(&self) -> f64 {
         self.shear.g_inf()
+    }
+
+    /// True when the shear modulus relaxes to zero (`g_inf = 0`, [`ShearProny::is_liquid`]).
+    pub fn is_liquid(&self) -> bool {
+        self.shear.is_liquid()
+    }
+
+    /// The modulus scale of the canonical units (Pa; docs/theory.md §14): the relaxed shear
+    /// modulus `g_inf` when positive, the glassy `G(0)` of a viscoelastic liquid (`g_inf = 0`).
+    pub fn modulus_scale(&self) -> f64 {
+        if self.shear.is_liquid() {
+            self.shear.glassy()
+        } else {
+            self.shear.g_inf()
+        }
     }
 
     /// Relaxed bulk modulus `K(inf)` (Pa), `inf` when incompressible.
@@ -312,7 +357,7 @@ fn standard_tau(g_1: f64, eta: f64) -> f64 {
 }
 
 fn check_g_inf(g_inf: f64) -> Result<f64> {
-    check("g_inf", g_inf, g_inf > 0.0, "0 < g_inf < inf (Pa)")
+    check("g_inf", g_inf, g_inf >= 0.0, "0 <= g_inf < inf (Pa)")
 }
 
 #[cfg(test)]

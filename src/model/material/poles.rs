@@ -14,7 +14,9 @@
 //! so a positive combination `W~ = alpha P~ + beta Q~` of two such functions increases
 //! strictly in `T` between consecutive times `tau_k < tau_(k+1)` of either, from `-inf` to
 //! `+inf`, and from `-inf` to `w_inf > 0` beyond the longest one: exactly one root `T` per
-//! interval, and no root below the shortest time (where `W~ > w_inf + sum_k w_k > 0`).
+//! interval, and no root below the shortest time (where `W~ > w_inf + sum_k w_k > 0`). When
+//! `w_inf = 0` (both inputs relax to zero) `W~` only tends to zero beyond the longest time and
+//! that interval has no root.
 //!
 //! - `G_eq = G (3K + G) / (3K + 4G)` (docs/theory.md §8): `W = 3K + 4G`, `N = G (3K + G)`.
 //! - `G_tot = G_A G_B / (G_A + G_B)` (two bodies): `W = G_A + G_B`, `N = G_A G_B`.
@@ -227,7 +229,13 @@ fn combine(pair: &Pair, c: Combination, relaxed: f64) -> Result<Prony> {
         }
     }
     let n = pair.times.len();
-    for k in 0..n {
+    // both inputs relax to zero: W~ tends to 0 beyond the longest time and has no root there
+    let roots = if c.w(pair.p_inf, pair.q_inf) == 0.0 {
+        n.saturating_sub(1)
+    } else {
+        n
+    };
+    for k in 0..roots {
         let lo = pair.times[k].tau;
         let (t, num, dw) = if k + 1 < n {
             let hi = pair.times[k + 1].tau;
@@ -296,7 +304,11 @@ pub fn equivalent_relaxation(material: &Material) -> Result<Prony> {
         BulkRheology::Elastic(k) => (*k, &[]),
         BulkRheology::Prony(p) => (p.k_inf(), p.terms()),
     };
-    let relaxed = g_inf * (3.0 * k_inf + g_inf) / (3.0 * k_inf + 4.0 * g_inf);
+    let relaxed = if g_inf == 0.0 {
+        0.0 // a liquid: G_eq relaxes to zero whatever the bulk
+    } else {
+        g_inf * (3.0 * k_inf + g_inf) / (3.0 * k_inf + 4.0 * g_inf)
+    };
     let pair = Pair::new(g_inf, shear.terms(), k_inf, k_terms);
     combine(&pair, Combination::Equivalent, relaxed)
 }
@@ -307,7 +319,11 @@ pub fn series(a: &Prony, b: &Prony) -> Result<Prony> {
     b.validate()?;
     let pairs =
         |p: &Prony| -> Vec<(f64, f64)> { p.terms.iter().map(|t| (t.coefficient, t.tau)).collect() };
-    let relaxed = a.relaxed * b.relaxed / (a.relaxed + b.relaxed);
+    let relaxed = if a.relaxed == 0.0 || b.relaxed == 0.0 {
+        0.0 // a liquid in series relaxes to zero
+    } else {
+        a.relaxed * b.relaxed / (a.relaxed + b.relaxed)
+    };
     let pair = Pair::new(a.relaxed, &pairs(a), b.relaxed, &pairs(b));
     combine(&pair, Combination::Series, relaxed)
 }

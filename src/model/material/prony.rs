@@ -15,21 +15,22 @@ pub struct PronyTerm {
 /// A Prony series `G(t) = relaxed + sum_k c_k exp(-t / tau_k)` with non-negative coefficients.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Prony {
-    /// Relaxed value `G(inf)` (Pa).
+    /// Relaxed value `G(inf)` (Pa); 0 for a viscoelastic liquid.
     pub relaxed: f64,
     /// The decaying terms.
     pub terms: Vec<PronyTerm>,
 }
 
 impl Prony {
-    /// Check that the series is a valid relaxation function: `0 < relaxed < inf`, every
-    /// `0 < tau_k < inf` and `0 <= c_k < inf` (errors name the field).
+    /// Check that the series is a valid relaxation function: `0 <= relaxed < inf`, every
+    /// `0 < tau_k < inf` and `0 <= c_k < inf`, and `G(0) > 0` (errors name the field;
+    /// `relaxed = 0` is a viscoelastic liquid).
     pub fn validate(&self) -> Result<()> {
         check(
             "relaxed",
             self.relaxed,
-            self.relaxed > 0.0,
-            "0 < G_eq(inf) < inf",
+            self.relaxed >= 0.0,
+            "0 <= G_eq(inf) < inf",
         )?;
         for p in &self.terms {
             check("tau", p.tau, p.tau > 0.0, "0 < tau < inf")?;
@@ -40,6 +41,12 @@ impl Prony {
                 "0 <= c_k < inf",
             )?;
         }
+        check(
+            "glassy",
+            self.glassy(),
+            self.glassy() > 0.0,
+            "0 < G_eq(0) < inf",
+        )?;
         Ok(())
     }
 

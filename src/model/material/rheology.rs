@@ -14,17 +14,24 @@
 //! Constructors validate and normalise: terms are sorted by increasing time, terms with equal
 //! times are merged (their moduli added) and terms whose modulus is zero (after merging) are
 //! dropped. Negative or non-finite moduli, non-positive or non-finite times are refused with
-//! [`Error::PronyTerm`] (field, input index, value); `g_inf <= 0`, `k_inf <= 0`, `K_0 <= 0` and
+//! [`Error::PronyTerm`] (field, input index, value); `g_inf < 0`, `k_inf < 0`, `K_0 <= 0` and
 //! a Poisson ratio outside `(-1, 0.5]` with [`Error::OutOfRange`].
+//!
+//! A relaxed modulus `g_inf = 0` (or `k_inf = 0`) is allowed when the series has a term: a
+//! viscoelastic liquid (a Maxwell fluid when one term), whose modulus relaxes to zero
+//! (docs/theory.md §14). A shear series of no term and `g_inf = 0` (no modulus at all) is
+//! refused, and so is a static Poisson ratio below 0.5 with `g_inf = 0`, which would give
+//! `K_0 = 0`.
 
 use crate::error::{check, Error, Result};
 
 /// Shear relaxation `G(t) = g_inf + sum_i g_i exp(-t / tau_i)` (docs/theory.md §8), validated.
 ///
-/// `g_inf` is the relaxed (static) shear modulus in Pa, `0 < g_inf < inf`; each term is a pair
-/// `(g_i, tau_i)`: modulus in Pa (`0 <= g_i < inf`) and relaxation time in s
-/// (`0 < tau_i < inf`). Terms are kept sorted by increasing `tau_i`, with distinct times and
-/// positive moduli. No terms: an elastic solid with shear modulus `g_inf`.
+/// `g_inf` is the relaxed (static) shear modulus in Pa, `0 <= g_inf < inf` (0: a viscoelastic
+/// liquid, which needs a term); each term is a pair `(g_i, tau_i)`: modulus in Pa
+/// (`0 <= g_i < inf`) and relaxation time in s (`0 < tau_i < inf`). Terms are kept sorted by
+/// increasing `tau_i`, with distinct times and positive moduli. No terms: an elastic solid with
+/// shear modulus `g_inf > 0`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShearProny {
     g_inf: f64,
@@ -42,8 +49,16 @@ impl ShearProny {
     /// assert_eq!(g.glassy(), 10.0);
     /// ```
     pub fn new(g_inf: f64, terms: &[(f64, f64)]) -> Result<Self> {
-        let g_inf = check("g_inf", g_inf, g_inf > 0.0, "0 < g_inf < inf (Pa)")?;
+        let g_inf = check("g_inf", g_inf, g_inf >= 0.0, "0 <= g_inf < inf (Pa)")?;
         let terms = normalise(terms, ("g_i", "0 <= g_i < inf (Pa)"), ("tau_i", TIME_RANGE))?;
+        if g_inf == 0.0 && terms.is_empty() {
+            return Err(Error::OutOfRange {
+                field: "g_inf",
+                value: g_inf,
+                allowed: "g_inf > 0 when the shear series has no term of positive modulus \
+                          (g_inf = 0 needs a term: a viscoelastic liquid)",
+            });
+        }
         Ok(Self { g_inf, terms })
     }
 
@@ -62,9 +77,15 @@ impl ShearProny {
         }
     }
 
-    /// Relaxed (static) shear modulus `G(inf) = g_inf` (Pa).
+    /// Relaxed (static) shear modulus `G(inf) = g_inf` (Pa); 0 for a viscoelastic liquid.
     pub fn g_inf(&self) -> f64 {
         self.g_inf
+    }
+
+    /// True when the relaxed modulus is zero (`g_inf = 0`): a viscoelastic liquid, whose
+    /// relaxed limits (Hertz with `g_inf`, the groups of Eq. 11) do not exist.
+    pub fn is_liquid(&self) -> bool {
+        self.g_inf == 0.0
     }
 
     /// The terms `(g_i` (Pa), `tau_i` (s)`)`, sorted by increasing `tau_i`, times distinct,
@@ -91,7 +112,7 @@ impl ShearProny {
 
 /// Bulk relaxation `K(t) = k_inf + sum_j k_j exp(-t / theta_j)` (docs/theory.md §8), validated.
 ///
-/// `k_inf` is the relaxed bulk modulus in Pa, `0 < k_inf < inf`; each term is a pair
+/// `k_inf` is the relaxed bulk modulus in Pa, `0 <= k_inf < inf`; each term is a pair
 /// `(k_j, theta_j)`: modulus in Pa (`0 <= k_j < inf`) and time in s (`0 < theta_j < inf`).
 /// At least one term must be given (an elastic bulk is [`BulkRheology::Elastic`]); terms are
 /// normalised like those of [`ShearProny`], and if every modulus is zero the series is refused.
@@ -104,7 +125,7 @@ pub struct BulkProny {
 impl BulkProny {
     /// Validated bulk series from `k_inf` (Pa) and the pairs `(k_j` (Pa), `theta_j` (s)`)`.
     pub fn new(k_inf: f64, terms: &[(f64, f64)]) -> Result<Self> {
-        let k_inf = check("k_inf", k_inf, k_inf > 0.0, "0 < k_inf < inf (Pa)")?;
+        let k_inf = check("k_inf", k_inf, k_inf >= 0.0, "0 <= k_inf < inf (Pa)")?;
         let terms = normalise(
             terms,
             ("k_j", "0 <= k_j < inf (Pa)"),
@@ -185,6 +206,14 @@ impl BulkInput {
                 check("nu", nu, nu > -1.0 && nu <= 0.5, "-1 < nu <= 0.5")?;
                 if nu == 0.5 {
                     BulkRheology::Incompressible
+                } else if g_inf == 0.0 {
+                    return Err(Error::OutOfRange {
+                        field: "nu",
+                        value: nu,
+                        allowed: "nu = 0.5 when g_inf = 0 (a static Poisson ratio below 0.5 \
+                                  gives K_0 = 2 g_inf (1 + nu) / (3 (1 - 2 nu)) = 0; give k_0, a \
+                                  bulk series or incompressible)",
+                    });
                 } else {
                     let k = 2.0 * g_inf * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu));
                     if !(k.is_finite() && k > 0.0) {

@@ -30,6 +30,7 @@ mod check;
 pub mod dma;
 mod impact;
 mod limits;
+pub mod liquid;
 pub mod oblique;
 mod prescribed;
 pub mod shapes;
@@ -184,6 +185,21 @@ about 3e-3 in the CoR); 1 % noise adds less than that. Asserted in `tests/dma.rs
 within 0.05 decades, fit within 1.5 % rms, CoR within 1 %). \
 Re-run: `mdr-impact validate`; by hand: `mdr-impact prony scenes/dma_example.csv`.\n\n";
 
+const LIQUID_TEXT: &str =
+    "A material whose shear modulus relaxes to zero (`g_inf = 0`, docs/theory.md \
+§14) is scaled by its glassy modulus; its groups and relaxed limits do not exist. A 4.11 g, 5 mm \
+ball on Maxwell fluids (G_1 = 10 MPa, incompressible, 0.99 m/s), on three shear terms with no \
+plateau and a bulk proportional to them (k_inf = 0, 1 m/s), and two equal balls of which one or \
+both are the Maxwell fluid of eta = 5000 Pa s (the other: the default solid). Each cell is the \
+relative CoR difference from `fast`; the three solvers share nothing but the material (`reference` \
+takes `G_eq` from `material::poles`, `fast` and `mdr` from `material::carson`). Asserted in \
+`tests/liquid.rs`. Re-run: `mdr-impact validate`.\n\n";
+
+const LIQUID_LIMIT_TEXT: &str = "\nContinuity at `g_inf = 0`: solids of relaxed modulus \
+`g_inf = eps G_1` (scaled by `g_inf`) against the Maxwell fluid of eta = 5000 Pa s (scaled by \
+`G(0)`), `fast` at rtol 1e-10. The gap shrinks in proportion to `eps` down to the solver's \
+tolerance.\n\n";
+
 const SPHERE_LIMIT_TEXT: &str = "\nThe limit exact sphere -> paraboloid (R = 5 mm, elastic, \
 `reference` at 1e-10, impact speeds 0.05 to 3 m/s): the maximum forces differ by a multiple of \
 `(a/R)^2` that settles as `a/R -> 0` (the exact sphere is softer: it reaches a wider contact at \
@@ -292,6 +308,14 @@ pub fn run(opts: &ValidateOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
     w(&mut md, &oblique::mbf_table()?.markdown());
     w(&mut md, oblique::DEM_TEXT);
     w(&mut md, &oblique::dem_table()?.markdown());
+    tick();
+
+    // 1h. viscoelastic liquids
+    w(&mut md, "\n## 1h. Viscoelastic liquids (g_inf = 0)\n\n");
+    w(&mut md, LIQUID_TEXT);
+    w(&mut md, &liquid::solver_table()?.markdown());
+    w(&mut md, LIQUID_LIMIT_TEXT);
+    w(&mut md, &liquid::limit_table()?.markdown());
     tick();
 
     // 2. prescribed histories
@@ -523,7 +547,7 @@ across one element, the viscous part of the density jumps at the edge and the or
 pub fn units() -> u64 {
     let hist = 2;
     let external = EXTERNAL_TABLE.lines().count().saturating_sub(1) * external_settings().len();
-    (IMPACTS.len() * settings().len() + 1 + external + IMPACTS.len() * hist + 8) as u64
+    (IMPACTS.len() * settings().len() + 1 + external + IMPACTS.len() * hist + 9) as u64
 }
 
 fn rel(file: &Path, base: &Path) -> String {

@@ -505,11 +505,12 @@ fn prepare(prony: &Prony, rtol: f64) -> Result<(f64, Vec<(f64, f64)>)> {
             allowed: "MIN_RTOL <= rtol <= MAX_RTOL (1e-12 ..= 0.1)",
         });
     }
-    if !(prony.relaxed > 0.0 && prony.relaxed.is_finite()) {
+    // c_inf = 0: a viscoelastic liquid (checked below to have a decaying term)
+    if !(prony.relaxed >= 0.0 && prony.relaxed.is_finite()) {
         return Err(Error::OutOfRange {
             field: "relaxed modulus",
             value: prony.relaxed,
-            allowed: "0 < c_inf < inf",
+            allowed: "0 <= c_inf < inf",
         });
     }
     let mut c_inf = prony.relaxed;
@@ -549,6 +550,13 @@ fn prepare(prony: &Prony, rtol: f64) -> Result<(f64, Vec<(f64, f64)>)> {
         .iter()
         .filter(|t| t.coefficient > 0.0 && t.tau > 0.0 && t.tau.is_finite())
         .count();
+    if !(c_inf > 0.0 || live.iter().any(|&(c, _)| c > 0.0)) {
+        return Err(Error::OutOfRange {
+            field: "relaxed modulus",
+            value: c_inf,
+            allowed: "0 < c_inf < inf, or c_inf = 0 with a decaying term (a liquid)",
+        });
+    }
     if decaying > FAST_MAX_TERMS {
         return Err(Error::TooManyTerms {
             solver: "fast",
