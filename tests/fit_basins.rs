@@ -112,3 +112,30 @@ fn intervals_hold_a_truth_within_the_threshold() {
     assert!(truth_ssr - ssr(&r) < 3.84);
     intervals_hold_the_truth(&r, &truth);
 }
+
+/// Six drops at one velocity (a CoR and a contact time each) hold two numbers: with
+/// `prony:2` they cannot pin two moduli while `g_inf` and `nu` are free, so no parameter may be
+/// reported as determined (an earlier fit called `g_1` and `g_2` determined).
+#[test]
+fn one_velocity_determines_no_prony_modulus() {
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/fit/six_drops_one_velocity.csv");
+    let sphere = Sphere::new(4.11e-3, 5.0e-3).unwrap();
+    let d = data::read(&path, sphere, "default").unwrap();
+    let kind = ModelKind::Prony { n: 2 };
+    let taus = fit::prony_times(&kind, None, &d).unwrap();
+    let (model, fixed) = fit::setup_model(kind, &[], taus).unwrap();
+    let r = fit::fit(&model, &d, &fixed).unwrap();
+    for e in r.parameters.iter().chain(&r.groups) {
+        assert!(
+            !e.identifiable,
+            "{} reported as determined: {}",
+            e.name, r.verdict
+        );
+    }
+    assert!(
+        r.verdict.contains("determined by the data: none"),
+        "{}",
+        r.verdict
+    );
+}

@@ -27,6 +27,7 @@ pub use crate::report::markdown::{fmt_err, fmt_val, Table};
 use crate::report::sections::FILLED;
 
 mod check;
+pub mod dem_example;
 pub mod dma;
 mod impact;
 mod limits;
@@ -280,6 +281,18 @@ pub fn run(opts: &ValidateOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
     w(&mut md, &dma::round_trip_table()?.markdown());
     tick();
 
+    // 1g. DEM laws with the three Hertz stiffnesses
+    w(
+        &mut md,
+        "\n## 1g. DEM laws on a rubber: `dem --modulus fit`\n\n",
+    );
+    w(&mut md, dem_example::DEM_TEXT);
+    w(
+        &mut md,
+        &dem_example::table(&dem_example::reports()?).markdown(),
+    );
+    tick();
+
     // 2. prescribed histories
     w(
         &mut md,
@@ -509,7 +522,7 @@ across one element, the viscous part of the density jumps at the edge and the or
 pub fn units() -> u64 {
     let hist = 2;
     let external = EXTERNAL_TABLE.lines().count().saturating_sub(1) * external_settings().len();
-    (IMPACTS.len() * settings().len() + 1 + external + IMPACTS.len() * hist + 7) as u64
+    (IMPACTS.len() * settings().len() + 1 + external + IMPACTS.len() * hist + 8) as u64
 }
 
 fn rel(file: &Path, base: &Path) -> String {
