@@ -7,7 +7,7 @@
 //! and contact times, 1 % or 5 % noise, `nu` drawn from `[0, 0.45]` or near 0.5
 //! (`[0.45, 0.499]`). Its truth and noise come from a SplitMix64 stream seeded by the study
 //! seed and `k` alone, so a set is reproducible on its own and the result does not depend on the
-//! number of threads.
+//! number of threads. The two checks and the Wilson interval: docs/theory.md §14.
 
 use rayon::prelude::*;
 
