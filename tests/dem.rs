@@ -463,3 +463,39 @@ fn long_curves_fit_on_a_subsample_and_report_every_velocity() {
     assert!(r.viscoelastic.fit.worst_rel_error < 1e-7);
     assert_eq!(r.csv_text().lines().count(), 402);
 }
+
+/// VALIDATION.md 1i: on the rubber-like polyisobutylene over 0.1–10 m/s the three stiffnesses
+/// give the same CoR errors per law, `fit` sits at its least-squares condition (mean
+/// `ln(t_law / t)` zero) and misses the contact times by less than either limit modulus, and the
+/// JSON carries each law's `worst_contact_time_rel_error` as the report has it.
+#[test]
+fn rubber_example_of_the_validation_report() {
+    use mdr_impact::report::validate::dem_example;
+    let reports = dem_example::reports().unwrap();
+    let [relaxed, glassy, fit] = [&reports[0], &reports[1], &reports[2]];
+    assert_eq!(fit.modulus, ModulusChoice::Fit);
+    for r in [relaxed, glassy] {
+        assert!((r.constant.fit.worst_rel_error - fit.constant.fit.worst_rel_error).abs() < 1e-9);
+        assert!(
+            (r.viscoelastic.fit.worst_rel_error - fit.viscoelastic.fit.worst_rel_error).abs()
+                < 1e-9
+        );
+        assert!(dem_example::mean_log_time_ratio(r).abs() > 0.5);
+        for (a, b) in [
+            (&r.constant_times, &fit.constant_times),
+            (&r.viscoelastic_times, &fit.viscoelastic_times),
+        ] {
+            assert!(b.worst_rel_error < a.worst_rel_error);
+        }
+    }
+    assert!(dem_example::mean_log_time_ratio(fit).abs() < 1e-9);
+    let json: serde_json::Value = serde_json::from_str(&fit.json()).unwrap();
+    assert_eq!(
+        json["laws"]["viscoelastic"]["worst_contact_time_rel_error"].as_f64(),
+        Some(fit.viscoelastic_times.worst_rel_error)
+    );
+    assert_eq!(
+        json["laws"]["constant"]["worst_contact_time_rel_error"].as_f64(),
+        Some(fit.constant_times.worst_rel_error)
+    );
+}

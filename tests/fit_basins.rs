@@ -112,3 +112,111 @@ fn intervals_hold_a_truth_within_the_threshold() {
     assert!(truth_ssr - ssr(&r) < 3.84);
     intervals_hold_the_truth(&r, &truth);
 }
+
+/// Six drops at one velocity (a CoR and a contact time each) hold two numbers: with
+/// `prony:2` they cannot pin two moduli while `g_inf` and `nu` are free, so no parameter may be
+/// reported as determined (an earlier fit called `g_1` and `g_2` determined).
+#[test]
+fn one_velocity_determines_no_prony_modulus() {
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/fit/six_drops_one_velocity.csv");
+    let sphere = Sphere::new(4.11e-3, 5.0e-3).unwrap();
+    let d = data::read(&path, sphere, "default").unwrap();
+    let kind = ModelKind::Prony { n: 2 };
+    let taus = fit::prony_times(&kind, None, &d).unwrap();
+    let (model, fixed) = fit::setup_model(kind, &[], taus).unwrap();
+    let r = fit::fit(&model, &d, &fixed).unwrap();
+    for e in r.parameters.iter().chain(&r.groups) {
+        assert!(
+            !e.identifiable,
+            "{} reported as determined: {}",
+            e.name, r.verdict
+        );
+    }
+    assert!(
+        r.verdict.contains("determined by the data: none"),
+        "{}",
+        r.verdict
+    );
+}
+
+/// The study across the box: two of its sets (`nu` free with contact times; `nu` fixed near 0.5
+/// from CoRs alone) end no higher than their truth's misfit, are drawn reproducibly inside the
+/// box, and count every fitted quantity once.
+#[test]
+fn box_study_sets_end_no_higher_than_the_truth() {
+    use mdr_impact::apps::fit::study_box::{self, BoxConfig, Cell, QUANTITIES};
+    let cfg = BoxConfig {
+        sets: 16,
+        seed: 1,
+        velocities: 10,
+    };
+    for k in [0, 11] {
+        let o = study_box::set_outcome(&cfg, k).unwrap();
+        assert_eq!(o.cell, Cell::of(k));
+        let (fit_ssr, truth_ssr) = o.ssr;
+        assert!(
+            study_box::relative_excess(&o) <= study_box::BOX_SSR_SLACK,
+            "set {k}: {fit_ssr} > {truth_ssr}"
+        );
+        let (truth, _) = study_box::draw(&cfg, k).unwrap();
+        assert_eq!(truth, o.truth);
+        let [g_inf, g_1, _, nu] = truth;
+        let (lo, hi) = study_box::BOX_LOG_G_INF;
+        assert!((lo..=hi).contains(&g_inf.log10()));
+        let (lo, hi) = study_box::BOX_LOG_P2;
+        assert!((lo..=hi).contains(&(g_inf / g_1).log10()));
+        let (lo, hi) = study_box::BOX_NU[usize::from(o.cell.near_half)];
+        assert!((lo..=hi).contains(&nu));
+        assert_eq!(o.status.len(), QUANTITIES.len());
+        // nu is fixed in odd sets and counted nowhere there
+        assert_eq!(o.status[3].is_none(), !o.cell.nu_free);
+    }
+}
+
+/// The Wilson interval's ends solve `|p_hat - p| = z sqrt(p (1 - p) / n)` (its definition).
+#[test]
+fn wilson_interval_solves_its_equation() {
+    use mdr_impact::apps::fit::study_box::wilson;
+    let z = 1.959_963_984_540_054;
+    for (k, n) in [(95, 100), (180, 190), (1, 7), (50, 50)] {
+        let p_hat = k as f64 / n as f64;
+        let (a, b) = wilson(k, n);
+        assert!(a <= p_hat && p_hat <= b);
+        for p in [a, b] {
+            if p == 0.0 || p == 1.0 {
+                continue;
+            }
+            let lhs = (p_hat - p).abs();
+            let rhs = z * (p * (1.0 - p) / n as f64).sqrt();
+            assert!((lhs - rhs).abs() < 1e-12, "{k}/{n}: {lhs} vs {rhs}");
+        }
+    }
+}
+
+/// `fit-study --box` refuses the single-point study's flags, `--sets` needs `--box`, and zero
+/// sets is a one-line error naming `sets`.
+#[test]
+fn box_study_flags_are_checked() {
+    let run = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_mdr-impact"))
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    for args in [
+        &["fit-study", "--box", "--reps", "3"][..],
+        &["fit-study", "--box", "--noise", "0.05"],
+        &["fit-study", "--box", "--cor-only"],
+        &["fit-study", "--sets", "3"],
+    ] {
+        assert_eq!(run(args).status.code(), Some(2), "{args:?}");
+    }
+    let o = run(&["fit-study", "--box", "--sets", "0"]);
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("sets") && err.trim().lines().count() == 1,
+        "{err}"
+    );
+}

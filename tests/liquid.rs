@@ -1,4 +1,4 @@
-//! Viscoelastic liquids, `g_inf = 0` (docs/theory.md §14): accepted by every solver and command,
+//! Viscoelastic liquids, `g_inf = 0` (docs/theory.md §15): accepted by every solver and command,
 //! scaled by the glassy modulus; checked against the other solvers (no shared code beyond the
 //! material) and against the limit `g_inf -> 0+` of solids, whose scale is `g_inf`.
 

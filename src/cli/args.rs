@@ -410,9 +410,16 @@ pub struct FitStudyArgs {
     #[arg(long, allow_hyphen_values = true, default_value_t = 0.01)]
     pub noise: f64,
     /// Only the CoR-only study (default: both, with and without contact times).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "across_box")]
     pub cor_only: bool,
-    /// Report whose fit section is replaced.
+    /// The study across the parameter box instead: `--sets` data sets, each with its own truth
+    /// (nu free and fixed, nu near 0.5, CoR only and with contact times, 1 % and 5 % noise).
+    #[arg(long = "box", conflicts_with_all = ["reps", "noise"])]
+    pub across_box: bool,
+    /// Data sets of the study across the box.
+    #[arg(long, default_value_t = 320, requires = "across_box")]
+    pub sets: usize,
+    /// Report whose fit section (or, with `--box`, fit-box section) is replaced.
     #[arg(long)]
     pub report: Option<PathBuf>,
 }

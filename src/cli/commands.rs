@@ -466,6 +466,26 @@ fn cmd_fit(a: FitArgs) -> Outcome {
 
 fn cmd_fit_study(a: FitStudyArgs) -> Outcome {
     let report = a.report.as_deref();
+    if a.across_box {
+        let cfg = fit::study_box::BoxConfig {
+            sets: a.sets,
+            seed: a.seed,
+            velocities: a.velocities,
+        };
+        if let Some(p) = report {
+            sections::require_section(p, &sections::FIT_BOX)?;
+        }
+        let r = with_progress(cfg.sets as u64, "fit-study --box", |tick| {
+            fit::study_box::run(&cfg, tick)
+        })?;
+        let section = fit::study_box::markdown(&r);
+        print!("{section}");
+        if let Some(p) = report {
+            sections::update_section(p, &sections::FIT_BOX, &section)?;
+            println!("fit-box section of {} updated", p.display());
+        }
+        return Ok(());
+    }
     let config = |contact_times| fit::study::StudyConfig {
         reps: a.reps,
         seed: a.seed,

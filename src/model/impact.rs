@@ -13,7 +13,7 @@
 //! the relaxed shear modulus `g_inf`, and the dimensionless groups of Eq. (11) exist for a
 //! half-space of the standard solid's shape only ([`Impact::groups`]). A viscoelastic liquid
 //! (`g_inf = 0`) has no relaxed modulus: its scale `G_inf` is the glassy shear modulus `G(0)`
-//! instead ([`Target::modulus_scale`], docs/theory.md §14), and its relaxed limits do not exist
+//! instead ([`Target::modulus_scale`], docs/theory.md §15), and its relaxed limits do not exist
 //! ([`Target::relaxes_to_zero`]).
 
 use crate::error::{check, Error, Result};
@@ -88,7 +88,7 @@ pub enum Target {
 impl Target {
     /// The modulus scale `G_inf` of the canonical units (Pa): the relaxed shear modulus
     /// `G(inf)`, or for a viscoelastic liquid (`g_inf = 0`) the glassy `G(0)`
-    /// ([`Material::modulus_scale`], docs/theory.md §14); for two bodies their scales combined
+    /// ([`Material::modulus_scale`], docs/theory.md §15); for two bodies their scales combined
     /// like compliances ([`TwoBodies::modulus_scale`]).
     pub fn modulus_scale(&self) -> f64 {
         match self {

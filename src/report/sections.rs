@@ -114,8 +114,15 @@ pub const FIT_STUDY: FilledSection = FilledSection {
     command: "mdr-impact fit-study --reps 200 --report VALIDATION.md",
 };
 
+/// The fit study across the parameter box, filled by `mdr-impact fit-study --box`.
+pub const FIT_BOX: FilledSection = FilledSection {
+    key: "fit-box",
+    heading: "11b. Fitting drop tests across the parameter box",
+    command: "mdr-impact fit-study --box --report VALIDATION.md",
+};
+
 /// Every section filled by another command, in the order of the report.
-pub const FILLED: &[FilledSection] = &[STRESS, PERFORMANCE, PYTHON, FIT_STUDY];
+pub const FILLED: &[FilledSection] = &[STRESS, PERFORMANCE, PYTHON, FIT_STUDY, FIT_BOX];
 
 /// Keep the bodies of the sections that other commands fill ([`FILLED`]) when `fresh` replaces
 /// `existing`.

@@ -65,7 +65,7 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
 }
 
 /// Where a failed solve of a viscoelastic liquid (`g_inf = 0`) is placed ([`Error::at`]): what
-/// usually makes it fail (docs/theory.md §14).
+/// usually makes it fail (docs/theory.md §15).
 pub const LIQUID_PLACE: &str = "g_inf = 0, a viscoelastic liquid that may hold the sphere (the \
     CoR tends to 0 and the contact time to inf when it relaxes fast against the contact)";
 

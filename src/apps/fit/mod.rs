@@ -66,6 +66,7 @@ pub mod model;
 pub mod report;
 mod starts;
 pub mod study;
+pub mod study_box;
 
 use std::cell::{Cell, RefCell};
 

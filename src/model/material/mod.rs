@@ -277,7 +277,7 @@ impl Material {
         self.shear.is_liquid()
     }
 
-    /// The modulus scale of the canonical units (Pa; docs/theory.md §14): the relaxed shear
+    /// The modulus scale of the canonical units (Pa; docs/theory.md §15): the relaxed shear
     /// modulus `g_inf` when positive, the glassy `G(0)` of a viscoelastic liquid (`g_inf = 0`).
     pub fn modulus_scale(&self) -> f64 {
         if self.shear.is_liquid() {

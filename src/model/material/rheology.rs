@@ -19,7 +19,7 @@
 //!
 //! A relaxed modulus `g_inf = 0` (or `k_inf = 0`) is allowed when the series has a term: a
 //! viscoelastic liquid (a Maxwell fluid when one term), whose modulus relaxes to zero
-//! (docs/theory.md §14). A shear series of no term and `g_inf = 0` (no modulus at all) is
+//! (docs/theory.md §15). A shear series of no term and `g_inf = 0` (no modulus at all) is
 //! refused, and so is a static Poisson ratio below 0.5 with `g_inf = 0`, which would give
 //! `K_0 = 0`.
 

@@ -1,4 +1,4 @@
-//! Section 1g of VALIDATION.md: viscoelastic liquids, `g_inf = 0` (docs/theory.md §14). Their
+//! Section 1h of VALIDATION.md: viscoelastic liquids, `g_inf = 0` (docs/theory.md §15). Their
 //! canonical units take the glassy modulus as scale; the CoR of `fast` is compared with
 //! `reference` and `mdr` (no shared code beyond the material), and with solids of a vanishing
 //! relaxed modulus `g_inf = eps G_1`, whose scale is still `g_inf`. `tests/liquid.rs` asserts

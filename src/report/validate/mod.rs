@@ -27,6 +27,7 @@ pub use crate::report::markdown::{fmt_err, fmt_val, Table};
 use crate::report::sections::FILLED;
 
 mod check;
+pub mod dem_example;
 pub mod dma;
 mod impact;
 mod limits;
@@ -187,7 +188,7 @@ Re-run: `mdr-impact validate`; by hand: `mdr-impact prony scenes/dma_example.csv
 
 const LIQUID_TEXT: &str =
     "A material whose shear modulus relaxes to zero (`g_inf = 0`, docs/theory.md \
-§14) is scaled by its glassy modulus; its groups and relaxed limits do not exist. A 4.11 g, 5 mm \
+§15) is scaled by its glassy modulus; its groups and relaxed limits do not exist. A 4.11 g, 5 mm \
 ball on Maxwell fluids (G_1 = 10 MPa, incompressible, 0.99 m/s), on three shear terms with no \
 plateau and a bulk proportional to them (k_inf = 0, 1 m/s), and two equal balls of which one or \
 both are the Maxwell fluid of eta = 5000 Pa s (the other: the default solid). Each cell is the \
@@ -316,6 +317,18 @@ pub fn run(opts: &ValidateOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
     w(&mut md, &liquid::solver_table()?.markdown());
     w(&mut md, LIQUID_LIMIT_TEXT);
     w(&mut md, &liquid::limit_table()?.markdown());
+    tick();
+
+    // 1i. DEM laws with the three Hertz stiffnesses
+    w(
+        &mut md,
+        "\n## 1i. DEM laws on a rubber: `dem --modulus fit`\n\n",
+    );
+    w(&mut md, dem_example::DEM_TEXT);
+    w(
+        &mut md,
+        &dem_example::table(&dem_example::reports()?).markdown(),
+    );
     tick();
 
     // 2. prescribed histories
@@ -547,7 +560,7 @@ across one element, the viscous part of the density jumps at the edge and the or
 pub fn units() -> u64 {
     let hist = 2;
     let external = EXTERNAL_TABLE.lines().count().saturating_sub(1) * external_settings().len();
-    (IMPACTS.len() * settings().len() + 1 + external + IMPACTS.len() * hist + 9) as u64
+    (IMPACTS.len() * settings().len() + 1 + external + IMPACTS.len() * hist + 10) as u64
 }
 
 fn rel(file: &Path, base: &Path) -> String {

@@ -1,0 +1,511 @@
+//! The fit study across the parameter box (`mdr-impact fit-study --box`): synthetic drop tests
+//! of standard solids drawn over the whole box, fitted again, and two promises checked in every
+//! set: the reported minimum's misfit is at most the truth's (no worse basin), and the reported
+//! 95 % intervals hold the truth about 95 % of the time.
+//!
+//! Set `k` belongs to the cell `k mod 16`: `nu` free or fixed at its true value, CoR only or CoR
+//! and contact times, 1 % or 5 % noise, `nu` drawn from `[0, 0.45]` or near 0.5
+//! (`[0.45, 0.499]`). Its truth and noise come from a SplitMix64 stream seeded by the study
+//! seed and `k` alone, so a set is reproducible on its own and the result does not depend on the
+//! number of threads. The two checks and the Wilson interval: docs/theory.md §16.
+
+use rayon::prelude::*;
+
+use super::data::{Data, Observation, Setup};
+use super::starts::p3_scale;
+use super::{fit, misfit, Model, ModelKind, ParamKind};
+use crate::error::Result;
+use crate::model::impact::Sphere;
+use crate::rng::SplitMix64;
+use crate::solvers::{solve, SolveOptions};
+
+use super::study::{SPHERE, TRUTH_RTOL};
+
+/// Velocity range of the drops (m/s), log-spaced.
+pub const BOX_VELOCITIES: (f64, f64) = (0.1, 10.0);
+/// `log10` range of the relaxed modulus `g_inf` (Pa) the truths are drawn from.
+pub const BOX_LOG_G_INF: (f64, f64) = (6.0, 9.0);
+/// `log10` range of the stiffness ratio `p2 = g_inf / g_1`.
+pub const BOX_LOG_P2: (f64, f64) = (-3.0, -0.5);
+/// `log10` range of `p3` (paper Eq. 11) at the data's geometric-mean velocity; `eta` follows.
+pub const BOX_LOG_P3: (f64, f64) = (-1.0, 1.0);
+/// Range of `nu` away from the incompressible limit, and near it.
+pub const BOX_NU: [(f64, f64); 2] = [(0.0, 0.45), (0.45, 0.499)];
+/// The two noise levels (relative standard deviation of every measured value).
+pub const BOX_NOISE: [f64; 2] = [0.01, 0.05];
+/// Excess of the reported minimum's misfit over the truth's that counts as numerical noise:
+/// relative to the truth's misfit (forward solves at `FIT_RTOL = 1e-8` move a weighted residual
+/// by about `1e-8 / noise`).
+pub const BOX_SSR_SLACK: f64 = 1e-6;
+
+/// An across-the-box study.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BoxConfig {
+    /// Number of synthetic data sets (16 cells, assigned in turn).
+    pub sets: usize,
+    /// Seed.
+    pub seed: u64,
+    /// Drops per set (velocities).
+    pub velocities: usize,
+}
+
+impl BoxConfig {
+    /// The inputs in range: at least one set, at least four velocities (four parameters).
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfRange`] naming `sets` or `velocities`.
+    pub fn check(&self) -> Result<()> {
+        crate::error::check("sets", self.sets as f64, self.sets >= 1, "1 <= sets")?;
+        crate::error::check(
+            "velocities",
+            self.velocities as f64,
+            self.velocities >= 4,
+            "4 <= velocities",
+        )
+        .map(|_| ())
+    }
+}
+
+/// The design cell of a set.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cell {
+    /// Whether `nu` is fitted (else fixed at its true value).
+    pub nu_free: bool,
+    /// Whether contact times are measured.
+    pub contact_times: bool,
+    /// Relative noise.
+    pub noise: f64,
+    /// Whether `nu` is drawn near 0.5.
+    pub near_half: bool,
+}
+
+impl Cell {
+    /// The cell of set `k`.
+    pub fn of(k: u64) -> Self {
+        Cell {
+            nu_free: k & 1 == 0,
+            contact_times: k & 2 == 0,
+            noise: BOX_NOISE[((k >> 2) & 1) as usize],
+            near_half: k & 8 != 0,
+        }
+    }
+}
+
+/// How one quantity of one set came out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Status {
+    /// Reported determined; whether its 95 % interval holds the truth.
+    Determined(bool),
+    /// Reported conditional on a `nu` the data do not determine; whether its interval holds the
+    /// truth anyway.
+    Conditional(bool),
+    /// Reported not determined (no value, or no bounded interval).
+    NotDetermined,
+}
+
+/// One set's outcome.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SetOutcome {
+    /// Index of the set.
+    pub set: u64,
+    /// Its cell.
+    pub cell: Cell,
+    /// The truth `g_inf, g_1, eta, nu` (Pa, Pa, Pa s, 1).
+    pub truth: [f64; 4],
+    /// Weighted SSR at the reported minimum and at the truth.
+    pub ssr: (f64, f64),
+    /// Per quantity (in [`QUANTITIES`] order; `None` when fixed).
+    pub status: Vec<Option<Status>>,
+}
+
+/// The quantities checked: the parameters and the CoR-determined groups.
+pub const QUANTITIES: [&str; 6] = ["g_inf", "g_1", "eta", "nu", "p2", "eta_over_g_inf_3_5"];
+
+fn truth_of(name: &str, t: &[f64; 4]) -> f64 {
+    let [g_inf, g_1, eta, nu] = *t;
+    match name {
+        "g_inf" => g_inf,
+        "g_1" => g_1,
+        "eta" => eta,
+        "nu" => nu,
+        "p2" => g_inf / g_1,
+        _ => eta / g_inf.powf(super::model::ETA_GROUP_EXPONENT),
+    }
+}
+
+/// The drops of set `k` (velocities only, no values yet).
+fn skeleton(cfg: &BoxConfig, contact_times: bool, noise: f64) -> Result<Data> {
+    let sphere = Sphere::new(SPHERE.0, SPHERE.1)?;
+    let n = cfg.velocities;
+    let (lo, hi) = BOX_VELOCITIES;
+    let observations = (0..n)
+        .map(|k| Observation {
+            setup: 0,
+            v0: (lo.ln() + (hi / lo).ln() * k as f64 / (n - 1) as f64).exp(),
+            cor: 0.5,
+            cor_sd: Some(noise),
+            contact_time: contact_times.then_some(1.0),
+            contact_time_sd: contact_times.then_some(noise),
+        })
+        .collect();
+    Ok(Data {
+        setups: vec![Setup {
+            name: "box".into(),
+            sphere: sphere.into(),
+        }],
+        observations,
+    })
+}
+
+/// The truth of set `k` and its noisy data (standard deviations `noise` times the exact values;
+/// CoRs capped at 1).
+pub fn draw(cfg: &BoxConfig, k: u64) -> Result<([f64; 4], Data)> {
+    let cell = Cell::of(k);
+    let mut rng = SplitMix64::new(cfg.seed ^ (k + 1).wrapping_mul(0xD1B5_4A32_D192_ED03));
+    let mut between = |(a, b): (f64, f64)| a + (b - a) * rng.uniform();
+    let g_inf = 10f64.powf(between(BOX_LOG_G_INF));
+    let g_1 = g_inf / 10f64.powf(between(BOX_LOG_P2));
+    let p3 = 10f64.powf(between(BOX_LOG_P3));
+    let nu = between(BOX_NU[usize::from(cell.near_half)]);
+    let mut data = skeleton(cfg, cell.contact_times, cell.noise)?;
+    let eta = p3 * g_inf.powf(super::model::ETA_GROUP_EXPONENT) / p3_scale(&data);
+    let truth = [g_inf, g_1, eta, nu];
+    let model = Model::new(ModelKind::StandardSolid, None, vec![])?;
+    let opts = SolveOptions {
+        rtol: TRUTH_RTOL,
+        ..Default::default()
+    };
+    let sphere = data.setups[0].sphere;
+    for o in &mut data.observations {
+        let out = solve(&model.impact(sphere, o.v0, &truth)?, &opts)?;
+        o.cor_sd = Some(cell.noise * out.cor);
+        o.cor = (out.cor * (1.0 + cell.noise * rng.normal())).min(1.0);
+        if cell.contact_times {
+            o.contact_time_sd = Some(cell.noise * out.contact_time);
+            o.contact_time = Some(out.contact_time * (1.0 + cell.noise * rng.normal()));
+        }
+    }
+    Ok((truth, data))
+}
+
+/// Fit set `k` (with `nu` fixed at its truth in the cells that fix it) and compare with the
+/// truth.
+pub fn set_outcome(cfg: &BoxConfig, k: u64) -> Result<SetOutcome> {
+    let cell = Cell::of(k);
+    let (truth, data) = draw(cfg, k)?;
+    let model = Model::new(ModelKind::StandardSolid, None, vec![])?;
+    let mut fixed = vec![None; model.params.len()];
+    if !cell.nu_free {
+        fixed[model.index("nu").unwrap_or(3)] = Some(truth[3]);
+    }
+    let r = fit(&model, &data, &fixed)?;
+    let ssr_fit: f64 = r.residuals.iter().map(|x| x.weighted * x.weighted).sum();
+    let ssr_truth = misfit(&model, &data, &truth)?;
+    let status = QUANTITIES
+        .iter()
+        .map(|&name| {
+            let e = r.get(name)?;
+            if e.fixed {
+                return None;
+            }
+            let t = truth_of(name, &truth);
+            let covered = e.ci95.is_some_and(|(a, b)| a <= t && t <= b);
+            let kind = r
+                .model
+                .index(name)
+                .map_or(ParamKind::Positive, |i| r.model.params[i].kind);
+            let conditional = r.conditional_on_nu.is_some()
+                && kind == ParamKind::Positive
+                && r.model.index(name).is_some()
+                && e.value.is_some();
+            Some(if e.identifiable {
+                Status::Determined(covered)
+            } else if conditional {
+                Status::Conditional(covered)
+            } else {
+                Status::NotDetermined
+            })
+        })
+        .collect();
+    Ok(SetOutcome {
+        set: k,
+        cell,
+        truth,
+        ssr: (ssr_fit, ssr_truth),
+        status,
+    })
+}
+
+/// A box study's result.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BoxReport {
+    /// The configuration.
+    pub config: BoxConfig,
+    /// Every set that was fitted.
+    pub outcomes: Vec<SetOutcome>,
+    /// Sets whose data or fit failed, with the message.
+    pub failures: Vec<(u64, String)>,
+}
+
+/// Run the study (sets in parallel); `tick` after each set.
+pub fn run(cfg: &BoxConfig, tick: &(dyn Fn() + Sync)) -> Result<BoxReport> {
+    cfg.check()?;
+    let results: Vec<(u64, Result<SetOutcome>)> = (0..cfg.sets as u64)
+        .into_par_iter()
+        .map(|k| {
+            let r = set_outcome(cfg, k);
+            tick();
+            (k, r)
+        })
+        .collect();
+    let mut outcomes = Vec::new();
+    let mut failures = Vec::new();
+    for (k, r) in results {
+        match r {
+            Ok(o) => outcomes.push(o),
+            Err(e) => failures.push((k, e.to_string())),
+        }
+    }
+    Ok(BoxReport {
+        config: *cfg,
+        outcomes,
+        failures,
+    })
+}
+
+/// The excess `ssr_fit - ssr_truth` of a set, relative to `max(1, ssr_truth)`.
+pub fn relative_excess(o: &SetOutcome) -> f64 {
+    (o.ssr.0 - o.ssr.1) / o.ssr.1.max(1.0)
+}
+
+/// Tallies of the statuses of one quantity over some sets.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Counts {
+    /// Reported determined.
+    pub determined: usize,
+    /// Of those, intervals holding the truth.
+    pub covered: usize,
+    /// Reported conditional on `nu`.
+    pub conditional: usize,
+    /// Of those, intervals holding the truth.
+    pub conditional_covered: usize,
+    /// Reported not determined.
+    pub not_determined: usize,
+}
+
+impl Counts {
+    /// Tally quantity `q` (index into [`QUANTITIES`]) over `sets`.
+    pub fn of<'a>(q: usize, sets: impl IntoIterator<Item = &'a SetOutcome>) -> Self {
+        let mut c = Counts::default();
+        for s in sets {
+            match s.status.get(q).copied().flatten() {
+                Some(Status::Determined(h)) => {
+                    c.determined += 1;
+                    c.covered += usize::from(h);
+                }
+                Some(Status::Conditional(h)) => {
+                    c.conditional += 1;
+                    c.conditional_covered += usize::from(h);
+                }
+                Some(Status::NotDetermined) => c.not_determined += 1,
+                None => {}
+            }
+        }
+        c
+    }
+}
+
+/// The Wilson score interval (95 %) of `k` successes in `n` trials.
+pub fn wilson(k: usize, n: usize) -> (f64, f64) {
+    if n == 0 {
+        return (0.0, 1.0);
+    }
+    let (z, n_f) = (1.959_963_984_540_054, n as f64);
+    let p = k as f64 / n_f;
+    let d = 1.0 + z * z / n_f;
+    let c = (p + z * z / (2.0 * n_f)) / d;
+    let h = z * (p * (1.0 - p) / n_f + z * z / (4.0 * n_f * n_f)).sqrt() / d;
+    ((c - h).max(0.0), (c + h).min(1.0))
+}
+
+fn cell_label(c: &Cell) -> [String; 4] {
+    [
+        if c.nu_free { "free" } else { "fixed (truth)" }.into(),
+        if c.contact_times {
+            "CoR + contact time"
+        } else {
+            "CoR only"
+        }
+        .into(),
+        format!("{} %", c.noise * 100.0),
+        format!(
+            "[{}, {}]",
+            BOX_NU[usize::from(c.near_half)].0,
+            BOX_NU[usize::from(c.near_half)].1
+        ),
+    ]
+}
+
+fn coverage_cell(c: &Counts) -> String {
+    if c.determined == 0 {
+        return "-".into();
+    }
+    let (a, b) = wilson(c.covered, c.determined);
+    format!(
+        "{}/{} = {:.1} % [{:.1}, {:.1}]",
+        c.covered,
+        c.determined,
+        100.0 * c.covered as f64 / c.determined as f64,
+        100.0 * a,
+        100.0 * b
+    )
+}
+
+/// The markdown of a box study (section 11b of VALIDATION.md).
+pub fn markdown(r: &BoxReport) -> String {
+    let c = &r.config;
+    let mut s = format!(
+        "Fit study across the parameter box (`src/apps/fit/study_box.rs`, \
+         `mdr-impact fit-study --box --sets {} --seed {} --velocities {}`): {} synthetic drop \
+         tests of standard solids, each with its own truth drawn log-uniformly over \
+         `g_inf` in 1e{}..1e{} Pa, `p2 = g_inf / g_1` in 1e{}..1e{} and `p3` (paper Eq. 11, at \
+         the data's geometric-mean velocity; `eta` follows) in 1e{}..1e{}, `nu` uniform in \
+         {:?} or near 0.5 in {:?}; the default scene's sphere (`m = {:e} kg`, `R = {:e} m`) at \
+         {} log-spaced velocities from {} to {} m/s, CoR (and contact times) from `auto` at \
+         rtol {TRUTH_RTOL:e}, each value multiplied by `1 + noise * N(0, 1)` with its standard \
+         deviation given. Set `k` is in cell `k mod 16`: `nu` free or fixed at its truth \
+         (`--fix nu=...`), CoR only or with contact times, 1 % or 5 % noise, `nu` away from or \
+         near 0.5. Every set is fitted by `fit` as a user would run it.\n\n",
+        c.sets,
+        c.seed,
+        c.velocities,
+        c.sets,
+        BOX_LOG_G_INF.0,
+        BOX_LOG_G_INF.1,
+        BOX_LOG_P2.0,
+        BOX_LOG_P2.1,
+        BOX_LOG_P3.0,
+        BOX_LOG_P3.1,
+        BOX_NU[0],
+        BOX_NU[1],
+        SPHERE.0,
+        SPHERE.1,
+        c.velocities,
+        BOX_VELOCITIES.0,
+        BOX_VELOCITIES.1,
+    );
+    let worse: Vec<&SetOutcome> = r
+        .outcomes
+        .iter()
+        .filter(|o| relative_excess(o) > BOX_SSR_SLACK)
+        .collect();
+    let worst = r
+        .outcomes
+        .iter()
+        .max_by(|a, b| relative_excess(a).total_cmp(&relative_excess(b)));
+    s.push_str(&format!(
+        "### No worse minimum than the truth\n\nIn {} of {} fitted sets the reported minimum's \
+         weighted SSR exceeds the truth's by more than {BOX_SSR_SLACK:e} relative (numerical \
+         noise of the forward solves).",
+        worse.len(),
+        r.outcomes.len()
+    ));
+    if let Some(w) = worst {
+        s.push_str(&format!(
+            " The largest excess `(SSR_fit - SSR_truth) / max(1, SSR_truth)` is {:.2e} (set {}, \
+             SSR {:.6} against {:.6}); a negative number means the fit is below the truth.",
+            relative_excess(w),
+            w.set,
+            w.ssr.0,
+            w.ssr.1
+        ));
+    }
+    s.push_str("\n\n| nu | data | noise | true nu in | sets | SSR_fit <= SSR_truth | largest relative excess |\n");
+    s.push_str("| --- | --- | --- | --- | --- | --- | --- |\n");
+    for cell in 0..16u64 {
+        let cl = Cell::of(cell);
+        let sets: Vec<&SetOutcome> = r.outcomes.iter().filter(|o| o.cell == cl).collect();
+        if sets.is_empty() {
+            continue;
+        }
+        let ok = sets
+            .iter()
+            .filter(|o| relative_excess(o) <= BOX_SSR_SLACK)
+            .count();
+        let ex = sets
+            .iter()
+            .map(|o| relative_excess(o))
+            .fold(f64::NEG_INFINITY, f64::max);
+        let [a, b, n, nu] = cell_label(&cl);
+        s.push_str(&format!(
+            "| {a} | {b} | {n} | {nu} | {} | {ok}/{} | {ex:.2e} |\n",
+            sets.len(),
+            sets.len()
+        ));
+    }
+    s.push_str(
+        "\n### Coverage of the 95 % intervals\n\nPer quantity over every set where it was \
+         fitted: `determined` counts the sets in which `fit` reported it determined, with the \
+         share whose 95 % interval holds the truth and that share's 95 % Wilson interval \
+         (binomial uncertainty; target 93–97 %). `conditional` counts the sets in which `nu` was \
+         free but not determined, so that `fit` reported the moduli conditional on the fitted \
+         `nu` (not determined); how many of those intervals hold the truth anyway is given in \
+         brackets. `not determined` counts the sets in which `fit` gave no value or no bounded \
+         interval. Without contact times `g_inf`, `g_1` and `eta` are never determined (only \
+         the groups are).\n\n",
+    );
+    s.push_str("| quantity | determined: coverage [95 % Wilson] | conditional on nu (interval holds truth) | not determined |\n");
+    s.push_str("| --- | --- | --- | --- |\n");
+    for (q, name) in QUANTITIES.iter().enumerate() {
+        let ct = Counts::of(q, &r.outcomes);
+        s.push_str(&format!(
+            "| {name} | {} | {} ({}) | {} |\n",
+            coverage_cell(&ct),
+            ct.conditional,
+            ct.conditional_covered,
+            ct.not_determined
+        ));
+    }
+    s.push_str(
+        "\nCoverage of the determined intervals by design factor (each row pools the sets of \
+         the cells it names):\n\n| sets | ",
+    );
+    s.push_str(&QUANTITIES.join(" | "));
+    s.push_str(" |\n| --- |");
+    s.push_str(&" --- |".repeat(QUANTITIES.len()));
+    s.push('\n');
+    type Pick = fn(&Cell) -> bool;
+    let factors: [(&str, Pick); 8] = [
+        ("nu free", |c| c.nu_free),
+        ("nu fixed", |c| !c.nu_free),
+        ("CoR + contact time", |c| c.contact_times),
+        ("CoR only", |c| !c.contact_times),
+        ("1 % noise", |c| c.noise == BOX_NOISE[0]),
+        ("5 % noise", |c| c.noise == BOX_NOISE[1]),
+        ("nu in [0, 0.45]", |c| !c.near_half),
+        ("nu in [0.45, 0.499]", |c| c.near_half),
+    ];
+    for (label, pick) in factors {
+        s.push_str(&format!("| {label} |"));
+        for q in 0..QUANTITIES.len() {
+            let ct = Counts::of(q, r.outcomes.iter().filter(|o| pick(&o.cell)));
+            if ct.determined == 0 {
+                s.push_str(" - |");
+            } else {
+                s.push_str(&format!(
+                    " {}/{} = {:.1} % |",
+                    ct.covered,
+                    ct.determined,
+                    100.0 * ct.covered as f64 / ct.determined as f64
+                ));
+            }
+        }
+        s.push('\n');
+    }
+    s.push_str(&format!("\nFailed sets: {}", r.failures.len()));
+    for (k, e) in r.failures.iter().take(5) {
+        s.push_str(&format!("; set {k}: {e}"));
+    }
+    s.push_str(".\n\n");
+    s
+}
