@@ -255,9 +255,19 @@ fn errors_are_reported() {
         ));
     }
     let mut bad = ok.clone();
-    bad.relaxed = 0.0;
+    bad.relaxed = -1.0;
     assert!(matches!(
         fast::impact(&bad, 1e-6, false),
+        Err(Error::OutOfRange { .. })
+    ));
+    // relaxed = 0 is a liquid: valid with a decaying term, nothing left without one
+    let mut liquid = ok.clone();
+    liquid.relaxed = 0.0;
+    let o = fast::impact(&liquid, 1e-6, false).unwrap();
+    assert!(o.cor > 0.0 && o.cor < 1.0, "{}", o.cor);
+    liquid.terms.clear();
+    assert!(matches!(
+        fast::impact(&liquid, 1e-6, false),
         Err(Error::OutOfRange { .. })
     ));
     let mut bad = ok.clone();

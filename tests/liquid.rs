@@ -6,7 +6,7 @@ mod common;
 
 use common::{abs_rel_err, opts, run, stderr};
 use mdr_impact::io::scene::Scene;
-use mdr_impact::model::material::{carson, poles, BulkInput, Material, ShearProny};
+use mdr_impact::model::material::{carson, poles, BulkInput, BulkProny, Material, ShearProny};
 use mdr_impact::{solve, Error, Impact, SolverKind, Sphere};
 
 /// A 4.11 g, 5 mm ball at `v0` on a Maxwell fluid (`g_inf`, `G_1 = 1e7` Pa, `eta` Pa s).
@@ -64,7 +64,7 @@ fn liquid_with_a_bulk_relaxing_to_zero() {
     let bulk: Vec<(f64, f64)> = shear.iter().map(|&(g, t)| (g * f, t)).collect();
     let m = Material::general(
         ShearProny::new(0.0, &shear).unwrap(),
-        BulkInput::Prony(mdr_impact::model::material::BulkProny::new(0.0, &bulk).unwrap()),
+        BulkInput::Prony(BulkProny::new(0.0, &bulk).unwrap()),
     )
     .unwrap();
     let (a, b) = (
@@ -131,6 +131,13 @@ fn refusals_name_the_field() {
         ),
         Err(Error::OutOfRange { field: "nu", .. })
     ));
+    // a bulk relaxing to zero beside a solid shear: a relaxed Poisson ratio of -1
+    let relaxing = || BulkInput::Prony(BulkProny::new(0.0, &[(1.0, 1.0)]).unwrap());
+    assert!(matches!(
+        Material::general(ShearProny::new(1.0, &[(1.0, 1.0)]).unwrap(), relaxing()),
+        Err(Error::OutOfRange { field: "k_inf", .. })
+    ));
+    assert!(Material::general(ShearProny::new(0.0, &[(1.0, 1.0)]).unwrap(), relaxing()).is_ok());
     // the scene names the table and key
     let e = Scene::parse(
         "[sphere]\nmass = 1e-3\nradius = 1e-3\n[impact]\nvelocity = 1.0\n\

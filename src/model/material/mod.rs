@@ -151,7 +151,7 @@ impl Material {
 
     /// Any material from its shear series and its bulk as written; checks `K_0`
     /// (`0 < K_0 < inf`, field `"k_0"`) and the Poisson ratio (`-1 < nu <= 0.5` with a finite
-    /// positive `K_0`, field `"nu"`).
+    /// positive `K_0`, field `"nu"`), and refuses `k_inf = 0` beside `g_inf > 0` (field `"k_inf"`).
     ///
     /// ```
     /// # use mdr_impact::model::material::{BulkInput, BulkRheology, Material, ShearProny};
@@ -169,6 +169,18 @@ impl Material {
             _ => None,
         };
         let bulk = bulk.resolve(shear.g_inf())?;
+        if let BulkRheology::Prony(p) = &bulk
+            && p.k_inf() == 0.0
+            && !shear.is_liquid()
+        {
+            // a solid's relaxed Poisson ratio would be -1, outside -1 < nu <= 0.5
+            return Err(crate::Error::OutOfRange {
+                field: "k_inf",
+                value: 0.0,
+                allowed: "0 < k_inf < inf (Pa) when g_inf > 0 (k_inf = 0 only for a liquid, \
+                          g_inf = 0)",
+            });
+        }
         // an incompressible bulk is written as such whatever it was given as
         let poisson = given.filter(|_| matches!(bulk, BulkRheology::Elastic(_)));
         Ok(Self {

@@ -112,7 +112,8 @@ impl ShearProny {
 
 /// Bulk relaxation `K(t) = k_inf + sum_j k_j exp(-t / theta_j)` (docs/theory.md §8), validated.
 ///
-/// `k_inf` is the relaxed bulk modulus in Pa, `0 <= k_inf < inf`; each term is a pair
+/// `k_inf` is the relaxed bulk modulus in Pa, `0 <= k_inf < inf` (0 only beside a liquid shear,
+/// `g_inf = 0`, checked by [`Material::general`](super::Material::general)); each term is a pair
 /// `(k_j, theta_j)`: modulus in Pa (`0 <= k_j < inf`) and time in s (`0 < theta_j < inf`).
 /// At least one term must be given (an elastic bulk is [`BulkRheology::Elastic`]); terms are
 /// normalised like those of [`ShearProny`], and if every modulus is zero the series is refused.
