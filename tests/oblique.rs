@@ -222,6 +222,8 @@ fn scene_keys_are_checked() {
         "{e}"
     );
     let s = default_with("tangential_velocity = 1.0\nspin = 2.0", Some(0.25));
+    // the keys survive the scene's TOML round trip
+    assert_eq!(Scene::parse(&s.to_toml()).unwrap(), s);
     assert_eq!(
         s.oblique,
         Oblique {

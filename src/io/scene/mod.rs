@@ -41,6 +41,11 @@
 //!                                      # instantaneous + ratios
 //! ```
 //!
+//! An oblique impact adds `[impact] tangential_velocity` (m/s) and `spin` (rad/s), a
+//! `[friction]` table with `coefficient` (Coulomb) and `inertia_factor` in `[sphere]` or each
+//! `[[body]]` (`I = factor m R^2`, default 0.4); all default to a frictionless normal impact
+//! (docs/theory.md §14, [`crate::model::oblique`]).
+//!
 //! Unknown keys are errors. Every path in a scene (the `[output]` files, a Prony table `file`)
 //! is relative to the folder of the scene file ([`Scene::load`]; to the working directory for
 //! text without a file, [`Scene::parse`]); an absolute path stays as it is.
