@@ -115,7 +115,7 @@
 //!   tighter than the rtol, at every rtol from 1e-2 to 1e-10: the smallest ratio of the defect
 //!   sum to the error was 2.3 at 1e-2, 25 at 1e-4, 65 at 1e-6, 175 at 1e-8, 445 at 1e-10;
 //!   with the calibration, accepted errors were at most 0.75 of the estimate and 0.46 `rtol`
-//!   (0.23 `rtol` from 1e-3 to 1e-10), and 93-96% of the rows took this path. The unverified
+//!   (0.23 `rtol` from 1e-3 to 1e-10), and 91-96% of the rows took this path. The unverified
 //!   solve alone was up to 7x outside `rtol` on those rows (CoR about 1e-5, or few steps at a
 //!   loose rtol); each of those had a defect sum far above the others and took the tight check.
 //!   `mdr-impact stress` counts this path and the largest error of its answers.
