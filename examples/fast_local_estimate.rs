@@ -13,6 +13,10 @@ use mdr_impact::report::stress;
 use mdr_impact::solvers::fast;
 use rayon::prelude::*;
 
+/// Per row and rtol: the error of one solve, its defect sum over `e`, the verified answer's
+/// error, its estimate, and whether it came from one solve.
+type Cell = (f64, f64, f64, f64, bool);
+
 fn main() {
     let arg = |i: usize, d: u64| {
         std::env::args()
@@ -24,7 +28,7 @@ fn main() {
     let rtols = &stress::RTOLS[..9]; // 1e-2 ..= 1e-10: the truth reaches 1e-11
                                      // per row and rtol: (error of one solve, its defect sum over e, the verified answer's error,
                                      // its estimate, answered by one solve)
-    let rows: Vec<Vec<Option<(f64, f64, f64, f64, bool)>>> = stress::sample(n, seed)
+    let rows: Vec<Vec<Option<Cell>>> = stress::sample(n, seed)
         .par_iter()
         .map(|row| {
             let imp = Groups::new(row.nu, row.p2, row.p3).and_then(Impact::from_groups);
@@ -58,9 +62,7 @@ fn main() {
     );
     for (j, rtol) in rtols.iter().enumerate() {
         let cells: Vec<_> = rows.iter().filter_map(|r| r[j]).collect();
-        let max = |f: &dyn Fn(&(f64, f64, f64, f64, bool)) -> Option<f64>| {
-            cells.iter().filter_map(f).fold(0.0, f64::max)
-        };
+        let max = |f: &dyn Fn(&Cell) -> Option<f64>| cells.iter().filter_map(f).fold(0.0, f64::max);
         let min_ratio = cells
             .iter()
             .filter(|c| c.0 > 0.0)
