@@ -302,6 +302,10 @@ pub struct BenchArgs {
     /// Also time `cor --input` on this many random rows (0: skip).
     #[arg(long, default_value_t = 0)]
     pub batch_rows: usize,
+    /// An earlier build of mdr-impact (scripts/build-baseline.sh prints its path): times its
+    /// `cor --input --solver fast` against this build's on the same rows, one thread each.
+    #[arg(long)]
+    pub baseline_bin: Option<PathBuf>,
 }
 
 // `stress` (its help text is the doc comment of Command::Stress)

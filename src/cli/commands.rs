@@ -346,6 +346,7 @@ fn cmd_bench(a: BenchArgs) -> Outcome {
         quick: a.quick,
         budget: a.budget,
         batch_rows: a.batch_rows,
+        baseline: a.baseline_bin.clone(),
     };
     if !opts.quick {
         // a missing report or markers fail before minutes of work

@@ -503,8 +503,11 @@ pub struct Work {
     pub element_updates: u64,
     /// Integrand / right-hand-side evaluations (reference and fast solvers).
     pub evaluations: u64,
-    /// Refinement levels of the adaptive driver.
+    /// Refinement levels of the adaptive driver (`fast`: its solves).
     pub levels: u32,
+    /// Solves tighter than the requested rtol made only to verify the answer (`fast`: 0 where
+    /// the loose check sufficed).
+    pub tight_checks: u32,
 }
 
 /// The method that produced an [`Outcome`]: one of the solvers, or the Hertz closed form that

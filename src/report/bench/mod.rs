@@ -14,15 +14,17 @@ use crate::error::{Error, Result};
 use crate::io::output::write_atomic;
 use crate::model::impact::Outcome;
 use crate::report::catalogue::{impact_case, Case};
-use crate::solvers::theory;
+use crate::solvers::{fast, theory};
 use crate::solvers::{solve, SolveOptions, SolverKind};
 
+mod baseline;
 mod report;
 mod targets;
 #[cfg(test)]
 mod tests;
 mod timing;
 
+pub use baseline::*;
 pub use report::*;
 pub use targets::*;
 pub use timing::*;
@@ -45,6 +47,9 @@ pub struct BenchPoint {
     pub cor_error: f64,
     /// Max |F - F_ref| / max F_ref over the solver's history samples.
     pub force_error: f64,
+    /// `false` for `fast`'s single unverified solve ([`crate::solvers::fast::impact_unverified`],
+    /// the solver before the verification), `true` for every solver as the user calls it.
+    pub verified: bool,
 }
 
 /// The accuracy sweep of each solver.
@@ -154,7 +159,27 @@ pub fn run(quick: bool, budget: f64, tick: &dyn Fn()) -> Result<Vec<BenchPoint>>
                     repeats,
                     cor_error: ((cor - reference.cor) / reference.cor).abs(),
                     force_error: force_error(&with_history, &prony, &reference)?,
+                    verified: true,
                 });
+                if solver == SolverKind::Fast {
+                    // the same solver without the verification, for the diagram
+                    let mut one = f64::NAN;
+                    let (median_seconds, repeats) = median_time(budget, || {
+                        one = fast::impact_unverified(&prony, rtol, false)?.cor;
+                        Ok(())
+                    })?;
+                    out.push(BenchPoint {
+                        solver,
+                        rtol,
+                        case: case.id,
+                        regime: case.regime.name(),
+                        median_seconds,
+                        repeats,
+                        cor_error: ((one - reference.cor) / reference.cor).abs(),
+                        force_error: f64::NAN,
+                        verified: false,
+                    });
+                }
                 tick();
             }
         }
@@ -169,12 +194,13 @@ pub fn units(quick: bool) -> u64 {
 
 /// Write the points as CSV.
 pub fn write_csv(path: &Path, points: &[BenchPoint]) -> Result<()> {
-    let mut s =
-        String::from("solver,rtol,case,regime,median_seconds,repeats,cor_error,force_error\n");
+    let mut s = String::from(
+        "solver,rtol,case,regime,median_seconds,repeats,cor_error,force_error,verified\n",
+    );
     for p in points {
         let _ = writeln!(
             s,
-            "{},{:e},{},{},{:e},{},{:e},{:e}",
+            "{},{:e},{},{},{:e},{},{:e},{:e},{}",
             p.solver,
             p.rtol,
             p.case,
@@ -182,7 +208,8 @@ pub fn write_csv(path: &Path, points: &[BenchPoint]) -> Result<()> {
             p.median_seconds,
             p.repeats,
             p.cor_error,
-            p.force_error
+            p.force_error,
+            p.verified
         );
     }
     write_atomic(path, |w| {
@@ -193,9 +220,19 @@ pub fn write_csv(path: &Path, points: &[BenchPoint]) -> Result<()> {
 /// Aggregate of one (solver, rtol) over the cases: geometric-mean median time, worst CoR error,
 /// worst force error; `None` when the setting was refused on every case.
 fn aggregate(points: &[BenchPoint], solver: SolverKind, rtol: f64) -> Option<(f64, f64, f64)> {
+    aggregate_of(points, solver, rtol, true)
+}
+
+/// [`aggregate`] of the verified (`true`) or the unverified points.
+fn aggregate_of(
+    points: &[BenchPoint],
+    solver: SolverKind,
+    rtol: f64,
+    verified: bool,
+) -> Option<(f64, f64, f64)> {
     let sel: Vec<&BenchPoint> = points
         .iter()
-        .filter(|p| p.solver == solver && p.rtol == rtol)
+        .filter(|p| p.solver == solver && p.rtol == rtol && p.verified == verified)
         .collect();
     if sel.is_empty() {
         return None;
@@ -220,6 +257,16 @@ pub fn plot(path: &Path, points: &[BenchPoint]) -> Result<()> {
         if !pts.is_empty() {
             series.push((solver.name().to_string(), pts));
         }
+        if solver == SolverKind::Fast {
+            let one: Vec<(f64, f64)> = rtols_of(solver)
+                .into_iter()
+                .filter_map(|rtol| aggregate_of(points, solver, rtol, false))
+                .map(|(t, e, _)| (t.log10(), e.max(1e-16).log10()))
+                .collect();
+            if !one.is_empty() {
+                series.push(("fast, one solve (unverified)".to_string(), one));
+            }
+        }
     }
     crate::io::plot::line_chart_svg(
         path,
@@ -228,6 +275,15 @@ pub fn plot(path: &Path, points: &[BenchPoint]) -> Result<()> {
         "log10 max relative CoR error",
         &series,
     )
+}
+
+/// The rtols of `solver`'s full sweep.
+fn rtols_of(solver: SolverKind) -> Vec<f64> {
+    sweep(false)
+        .into_iter()
+        .filter(|(k, _)| *k == solver)
+        .flat_map(|(_, r)| r)
+        .collect()
 }
 
 /// The cheapest `mdr-euler` and `fast` settings (geometric-mean median time, s) whose worst CoR

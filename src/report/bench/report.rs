@@ -1,6 +1,7 @@
 //! The performance section of VALIDATION.md.
 
 use std::fmt::Write as _;
+use std::path::PathBuf;
 
 use super::*;
 
@@ -43,6 +44,33 @@ pub fn summary(
                     );
                 }
             }
+        }
+    }
+    let one: Vec<String> = sweep(false)
+        .into_iter()
+        .filter(|(k, _)| *k == SolverKind::Fast)
+        .flat_map(|(_, r)| r)
+        .filter_map(|rtol| {
+            let (t1, e1, _) = aggregate_of(points, SolverKind::Fast, rtol, false)?;
+            let (tv, ev, _) = aggregate(points, SolverKind::Fast, rtol)?;
+            Some(format!(
+                "| {rtol:.0e} | {} | {e1:.1e} | {} | {ev:.1e} | {:.2} |",
+                fmt_time(t1),
+                fmt_time(tv),
+                tv / t1
+            ))
+        })
+        .collect();
+    if !one.is_empty() {
+        let _ = writeln!(
+            s,
+            "\n`fast` verified (as called) against one unverified solve at the same rtol \
+             (`fast::impact_unverified`, the solver before the verification; the diagram's \
+             \"fast, one solve\" series), same cases:\n\n| rtol | one solve: time | max CoR error \
+             | verified: time | max CoR error | time ratio |\n| --- | --- | --- | --- | --- | --- |"
+        );
+        for l in one {
+            let _ = writeln!(s, "{l}");
         }
     }
     if let Some((euler, fast)) = cheapest_pair(points) {
@@ -92,7 +120,7 @@ pub fn summary(
 /// What `mdr-impact bench` runs: the work-precision points and (without `quick`) the row
 /// timings, the general materials and the Euler baseline on them; always one fit, and, when
 /// `batch_rows > 0`, the `cor --input` path on that many random rows.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct BenchOptions {
     /// One case, one setting per solver, no row timings (CI smoke test).
     pub quick: bool,
@@ -100,6 +128,8 @@ pub struct BenchOptions {
     pub budget: f64,
     /// Random rows for the `cor --input` timing (0: skip).
     pub batch_rows: usize,
+    /// An earlier build of this program to time against ([`baseline_ratio`]; none: skip).
+    pub baseline: Option<PathBuf>,
 }
 
 /// Velocities of the `curve` timing (`--v0`, log-spaced) on the default scene.
@@ -128,6 +158,8 @@ pub struct BenchReport {
     pub shapes: Vec<ShapeTiming>,
     /// The machine it ran on ([`machine`]).
     pub machine: String,
+    /// This build against an earlier one, when asked for.
+    pub baseline: Option<BaselineRatio>,
 }
 
 /// Units of progress [`run_full`] reports: the work-precision points and, without `quick`,
@@ -179,8 +211,16 @@ pub fn run_full(opts: &BenchOptions, tick: &dyn Fn()) -> Result<BenchReport> {
     curve::run(&scene.impact, &scene.options, &range, &|| {})?;
     let curve_seconds = t0.elapsed().as_secs_f64();
     let shapes = shape_timing(opts.budget)?;
+    let baseline = match &opts.baseline {
+        Some(b) => {
+            let exe = std::env::current_exe().map_err(|e| Error::io("current_exe", e))?;
+            Some(baseline_ratio(b, &exe)?)
+        }
+        None => None,
+    };
     Ok(BenchReport {
-        options: *opts,
+        options: opts.clone(),
+        baseline,
         points,
         timed,
         general,
@@ -250,6 +290,9 @@ impl BenchReport {
             self.curve_seconds
         );
         s.push_str(&shape_timing_table(&self.shapes));
+        if let Some(b) = &self.baseline {
+            s.push_str(&b.text());
+        }
         if !self.timed.is_empty() {
             s.push_str(&targets(
                 &self.timed,
@@ -280,6 +323,10 @@ impl BenchReport {
         s.push_str(&self.curve_line());
         s.push('\n');
         s.push_str(&shape_timing_table(&self.shapes));
+        if let Some(b) = &self.baseline {
+            s.push('\n');
+            s.push_str(&b.text());
+        }
         s
     }
 }

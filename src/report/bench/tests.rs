@@ -247,16 +247,22 @@ fn report(quick: bool) -> BenchReport {
         repeats: 3,
         cor_error,
         force_error: 1e-5,
+        verified: true,
     };
     BenchReport {
         options: BenchOptions {
             quick,
             budget: 0.1,
             batch_rows: 0,
+            baseline: None,
         },
         points: vec![
             point(SolverKind::MdrEuler, 1e-4, 2e-2, 5e-5),
             point(SolverKind::Fast, 1e-4, 2e-5, 1e-6),
+            BenchPoint {
+                verified: false,
+                ..point(SolverKind::Fast, 1e-4, 1e-5, 3e-6)
+            },
         ],
         timed: if quick {
             vec![]
@@ -274,6 +280,7 @@ fn report(quick: bool) -> BenchReport {
         curve_seconds: 0.0125,
         shapes: vec![],
         machine: "a test machine".into(),
+        baseline: None,
     }
 }
 
@@ -292,6 +299,11 @@ fn full_report_text_section_and_files() {
     let section = r.section();
     assert!(section.starts_with("Measured by `mdr-impact bench` in one run on a test machine"));
     assert!(section.contains("`mdr-impact fit` of 10 drops"));
+    // the verified fast beside one unverified solve: times 20 us and 10 us, ratio 2
+    assert!(
+        section.contains("| 1e-4 | 10.0 µs | 3.0e-6 | 20.0 µs | 1.0e-6 | 2.00 |"),
+        "{section}"
+    );
     assert!(section.contains(
         "\n`mdr-impact curve --v0 0.01:10:200 --log` on the default scene (200 velocities, all \
          cores): 0.013 s.\n"
@@ -316,6 +328,7 @@ fn run_full_refuses_a_budget_that_is_not_positive() {
             quick: true,
             budget,
             batch_rows: 0,
+            baseline: None,
         };
         assert!(matches!(
             run_full(&opts, &|| {}),
@@ -325,4 +338,40 @@ fn run_full_refuses_a_budget_that_is_not_positive() {
             })
         ));
     }
+}
+
+#[test]
+fn baseline_rows_and_text() {
+    let csv = baseline_rows_csv(200, 28);
+    assert_eq!(csv, baseline_rows_csv(200, 28));
+    let rows: Vec<Vec<f64>> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 200);
+    for r in &rows {
+        assert!((-0.5..=0.5).contains(&r[0]), "{r:?}");
+        assert!(
+            (1e-3..=1e2).contains(&r[1]) && (1e-2..=1e3).contains(&r[2]),
+            "{r:?}"
+        );
+    }
+    let b = BaselineRatio {
+        baseline: "old/mdr-impact".into(),
+        rows: 200,
+        baseline_seconds: 2.0,
+        today_seconds: 2.5,
+        max_cor_difference: 3e-7,
+    };
+    assert_eq!(b.ratio(), 1.25);
+    let t = b.text();
+    assert!(
+        t.contains("2.500 s against 2.000 s, a ratio of **1.25**"),
+        "{t}"
+    );
+    assert!(
+        t.contains("`old/mdr-impact`") && t.contains("3.0e-7"),
+        "{t}"
+    );
 }

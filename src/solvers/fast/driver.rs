@@ -53,16 +53,82 @@ pub(super) fn solve_once<const K: usize>(
     restitute(s, turn, prec)
 }
 
-/// The verified solve behind [`impact`]: solves at `rtol`, `rtol / FAST_CHECK_RATIO`, ... (at
-/// most [`FAST_CHECK_LEVELS`] solves) until two successive CoRs agree to `rtol` relative, and
+/// One solve at `prec` whose CoR lies above the step tolerance's energy floor: a CoR below
+/// [`FAST_MIN_TOL_SCALE`] lowers the floor to `e / 2` and solves again (at most
+/// `floor_solves_left` times, counted down). The work of every solve is in the solver's
+/// counters; the outcome's `work.steps` counts the steps of all of them.
+fn floored<const K: usize>(
+    s: &mut Solver<K>,
+    prec: f64,
+    history: bool,
+    floor_solves_left: &mut u32,
+) -> Result<Outcome> {
+    let mut steps = 0;
+    loop {
+        let mut out = solve_once(s, prec, history)?;
+        steps += out.work.steps;
+        if out.cor < s.min_tol_scale && *floor_solves_left > 0 {
+            s.min_tol_scale = (0.5 * out.cor).max(f64::MIN_POSITIVE);
+            *floor_solves_left -= 1;
+            continue;
+        }
+        out.work.steps = steps;
+        return Ok(out);
+    }
+}
+
+/// The returned solve's finishing: the maximum force from its dense output, the estimate and
+/// the work of every solve.
+fn finish<const K: usize>(
+    s: &mut Solver<K>,
+    mut out: Outcome,
+    estimate: f64,
+    steps: u64,
+    levels: u32,
+    tight_checks: u32,
+) -> Outcome {
+    if let Some((t_max, f_max)) = s.peak_node {
+        out.max_force = s.refine_peak(t_max).max(f_max);
+    }
+    out.cor_error_estimate = Some(estimate);
+    out.work.steps = steps;
+    out.work.evaluations = s.evaluations;
+    out.work.levels = levels;
+    out.work.tight_checks = tight_checks;
+    out
+}
+
+/// One solve at `rtol`, not verified (the energy floor handled as in [`verified`]): the
+/// solver's `cor_error_estimate` is the sum of the local defects over `e`, no global estimate.
+pub(super) fn unverified<const K: usize>(
+    s: &mut Solver<K>,
+    rtol: f64,
+    history: bool,
+) -> Result<Outcome> {
+    let mut left = 2;
+    let out = floored(s, rtol, history, &mut left)?;
+    let (steps, est) = (
+        out.work.steps,
+        out.cor_error_estimate.unwrap_or(f64::INFINITY),
+    );
+    Ok(finish(s, out, est, steps, 3 - left, 0))
+}
+
+/// The verified solve behind [`impact`] (module docs, "Verified answers").
+///
+/// **One solve** (for `rtol >= FAST_ONE_SOLVE_MIN_RTOL`): the solve `A` at `rtol` is returned
+/// when its calibrated local estimate, the sum of its accepted local defects over `e` divided by
+/// [`local_calibration`]`(rtol)`, is at most `rtol` and `e rtol >= FAST_ROUNDOFF_FLOOR`, with
+/// that estimate. Otherwise the tight check goes on from `A`.
+///
+/// **Tight check**: solves at `rtol`, `rtol / FAST_CHECK_RATIO`, ... (at most
+/// [`FAST_CHECK_LEVELS`] solves) until two successive CoRs agree to `rtol` relative, and
 /// returns the last (tighter) one with that relative difference as its error estimate.
 ///
 /// The difference estimates the error of the looser of the two solves; with the tolerance
 /// proportionality measured on the external tables (maximum error 0.81 `rtol` at every `rtol`
 /// from 1e-2 to 1e-11) the returned value is about `FAST_CHECK_RATIO` times more accurate than
-/// that. The sum of the local defects (the per-step estimates that choose the steps) is no
-/// global estimate: it over-estimates the error 66x to several thousand times, and where the
-/// step tolerance cannot follow the CoR (below its energy floor) it was seen below the error.
+/// that.
 ///
 /// A CoR below [`FAST_MIN_TOL_SCALE`] (the step tolerance's energy floor, relative to the
 /// impact energy) lowers that floor to `e / 2` for the next solves: the error allowed per step
@@ -73,43 +139,100 @@ pub(super) fn verified<const K: usize>(
     rtol: f64,
     history: bool,
 ) -> Result<Outcome> {
-    let mut steps = 0u64;
-    let mut levels = 0u32;
-    let mut prev: Option<f64> = None;
+    // solves at one tolerance repeated after the energy floor was lowered (at most 2)
+    let mut floor_left = 2u32;
+    if rtol < FAST_ONE_SOLVE_MIN_RTOL {
+        return tight(s, rtol, history, None, rtol, 0, floor_left);
+    }
+    match floored(s, rtol, history, &mut floor_left) {
+        Ok(a) => {
+            let steps = a.work.steps;
+            let est = a.cor_error_estimate.unwrap_or(f64::INFINITY) / local_calibration(rtol);
+            if est <= rtol && a.cor * rtol >= FAST_ROUNDOFF_FLOOR {
+                let levels = 1 + (2 - floor_left);
+                return Ok(finish(s, a, est, steps, levels, 0));
+            }
+            tight(
+                s,
+                rtol,
+                history,
+                Some(a),
+                rtol / FAST_CHECK_RATIO,
+                1,
+                floor_left,
+            )
+        }
+        // long steps of a loose solve can fail to settle: the tighter solves go on
+        Err(Error::NoConvergence { .. } | Error::WorkLimit { .. }) => tight(
+            s,
+            rtol,
+            history,
+            None,
+            rtol / FAST_CHECK_RATIO,
+            1,
+            floor_left,
+        ),
+        Err(e) => Err(e),
+    }
+}
+
+/// The factor by which the sum of the local defects of a solve at `rtol` (over `e`) exceeds
+/// its CoR error: `FAST_LOCAL_CALIBRATION rtol^(-FAST_LOCAL_EXPONENT)` (module docs,
+/// "Verified answers": the measured ratios and their margin).
+pub(super) fn local_calibration(rtol: f64) -> f64 {
+    FAST_LOCAL_CALIBRATION * rtol.powf(-FAST_LOCAL_EXPONENT)
+}
+
+/// The tight check of [`verified`], from the step tolerance `prec` after `tried` solves,
+/// comparing first with the solve `first` (at `rtol`) if there is one; `floor_left` carries the
+/// floor solves left.
+fn tight<const K: usize>(
+    s: &mut Solver<K>,
+    rtol: f64,
+    history: bool,
+    first: Option<Outcome>,
+    mut prec: f64,
+    mut tried: u32,
+    mut floor_left: u32,
+) -> Result<Outcome> {
+    let mut steps = first.as_ref().map_or(0, |a| a.work.steps);
+    let mut levels = tried;
+    let mut tight_checks = 0u32;
+    let mut prev: Option<f64> = first.as_ref().map(|a| a.cor);
     let mut estimate = f64::INFINITY;
     // the last solve's sum of local defects: the refusal's estimate when no two solves compare
-    let mut local = f64::INFINITY;
+    let mut local = first
+        .as_ref()
+        .and_then(|a| a.cor_error_estimate)
+        .unwrap_or(f64::INFINITY);
     let mut last_err: Option<Error> = None;
-    let mut prec = rtol;
-    // solves at one tolerance repeated after the energy floor was lowered (at most 2)
-    let mut floor_solves = 0u32;
-    while levels < FAST_CHECK_LEVELS && prec >= FAST_MIN_PREC {
+    while tried < FAST_CHECK_LEVELS && prec >= FAST_MIN_PREC {
+        tried += 1;
         levels += 1;
-        match solve_once(s, prec, history) {
-            Ok(mut out) => {
+        if prec < rtol {
+            tight_checks += 1;
+        }
+        let floor_before = floor_left;
+        match floored(s, prec, history, &mut floor_left) {
+            Ok(out) => {
                 steps += out.work.steps;
                 local = out.cor_error_estimate.unwrap_or(f64::INFINITY);
-                if out.cor < s.min_tol_scale && floor_solves < 2 {
-                    // the floor was active in this solve: it does not count as a check, nor
-                    // as one of the FAST_CHECK_LEVELS tolerances
-                    s.min_tol_scale = (0.5 * out.cor).max(f64::MIN_POSITIVE);
-                    floor_solves += 1;
-                    levels -= 1;
+                if floor_left < floor_before {
+                    // the floor was lowered in this solve: the solve before does not compare
                     prev = None;
-                    continue;
                 }
                 if let Some(p) = prev {
                     estimate = ((out.cor - p) / out.cor).abs();
                     if estimate <= rtol {
-                        // the maximum force of the returned solve from its dense output
-                        if let Some((t_max, f_max)) = s.peak_node {
-                            out.max_force = s.refine_peak(t_max).max(f_max);
-                        }
-                        out.cor_error_estimate = Some(estimate);
-                        out.work.steps = steps;
-                        out.work.evaluations = s.evaluations;
-                        out.work.levels = levels + floor_solves;
-                        return Ok(out);
+                        let floors = 2 - floor_left;
+                        return Ok(finish(
+                            s,
+                            out,
+                            estimate,
+                            steps,
+                            levels + floors,
+                            tight_checks,
+                        ));
                     }
                 }
                 prev = Some(out.cor);
@@ -124,6 +247,7 @@ pub(super) fn verified<const K: usize>(
         }
         prec /= FAST_CHECK_RATIO;
     }
+    let levels = levels + (2 - floor_left);
     match (estimate.is_finite(), local.is_finite(), last_err) {
         (false, false, Some(e)) => Err(e),
         (true, ..) | (false, true, _) => Err(Error::AccuracyNotReached {
@@ -135,11 +259,11 @@ pub(super) fn verified<const K: usize>(
                 local
             },
             required: rtol,
-            levels: levels + floor_solves,
+            levels,
         }),
         (false, false, None) => Err(Error::NoConvergence {
             what: "fast: successive solves",
-            iterations: u64::from(levels + floor_solves),
+            iterations: u64::from(levels),
         }),
     }
 }

@@ -210,6 +210,7 @@ fn add(total: &mut crate::model::impact::Work, w: &crate::model::impact::Work) {
     total.element_updates += w.element_updates;
     total.elements = total.elements.max(w.elements);
     total.levels += w.levels;
+    total.tight_checks += w.tight_checks;
 }
 
 #[cfg(test)]

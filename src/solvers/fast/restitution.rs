@@ -288,6 +288,7 @@ pub(super) fn restitute<const K: usize>(
             element_updates: 0,
             evaluations: s.evaluations,
             levels: 1,
+            tight_checks: 0,
         },
         solver: Method::Fast,
         fallback: None,

@@ -787,6 +787,7 @@ fn finish(
             element_updates,
             evaluations: 0,
             levels: 1,
+            tight_checks: 0,
         },
         solver,
         fallback: None,
