@@ -429,7 +429,8 @@ fn cap_psi(u: f64) -> f64 {
     cap_psi_at(u, if u >= 0.2 { u.atanh() } else { 0.0 })
 }
 
-/// [`cap_psi`] given `atanh_u = atanh(u)` (not read for `u < 0.2`).
+/// `ψ(u) = (1 + u^2) atanh(u) - u` given `atanh_u = atanh(u)` (not read for `u < 0.2`, where the
+/// series of `cap_psi` replaces the cancelling closed form).
 pub fn cap_psi_at(u: f64, atanh_u: f64) -> f64 {
     if u >= 0.2 {
         return (1.0 + u * u) * atanh_u - u;
