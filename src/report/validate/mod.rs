@@ -160,7 +160,8 @@ one case: `mdr-impact run scenes/two_spheres.toml`.\n\n";
 
 const SHAPES_TEXT: &str = "Every indenter shape of docs/theory.md §11 (`[indenter]` and \
 `[sphere] profile`), elastic and viscoelastic, by `reference` (rtol 1e-10), `auto` (rtol 1e-8: \
-`fast`, except for the flat punch and the elastic half-space, which it hands to `reference`) and \
+`fast`, the flat punch by the modes of its linear ODE and elastic power laws in closed form; the \
+exact sphere on the elastic half-space, which `fast` refuses, by `reference`) and \
 `mdr` (rtol 1e-4). Each cell is the \
 largest relative difference of the CoR, contact time, maximum indentation and maximum force \
 against the truth: on the elastic half-space (G = 1 MPa, incompressible, 4.11 g at 0.8 m/s) the \
@@ -172,7 +173,9 @@ is taken from `reference`); otherwise `reference` at 1e-10. Materials: the stand
 G_inf = 1 MPa, G_1 = 10 MPa, eta = 500 Pa s, nu = 0.3 at 0.99 m/s; three shear terms on an \
 elastic bulk at 1.5 m/s; the 30-term polyisobutylene of `scenes/polyisobutylene.toml` at 1 m/s. \
 Asserted in `tests/shapes.rs` (`reference` within 1e-8, `auto` within 1e-6, `mdr` within \
-2e-4). Re-run: `mdr-impact validate`; one case: `mdr-impact run scenes/cone_indenter.toml`.\n\n";
+2e-4); `tests/shapes_fast.rs` asserts `fast` itself against `reference` on every shape and \
+material (within 1e-6 at rtol 1e-8, 1e-8 at rtol 1e-10), the exact sphere on polyisobutylene up \
+to a/R = 0.73. Re-run: `mdr-impact validate`; one case: `mdr-impact run scenes/cone_indenter.toml`.\n\n";
 
 const DMA_TEXT: &str = "The `prony` command (docs/dma.md) on synthetic DMA data of a known \
 material: shear moduli G', G'' of a 20-term spectrum (`g_inf` = 1 MPa, times 1e-6 to 1e2 s, \

@@ -72,10 +72,7 @@ pub(super) fn compress<const K: usize>(
     let mut steps = 0u64;
     let mut err_sum = 0.0;
     // glassy Hertz time of maximum indentation as the first length scale
-    let d0 = match &s.shape.geom {
-        None => (1.25 / (K16 * s.glassy)).powf(0.4),
-        Some(g) => g.elastic_max_indentation(s.glassy),
-    };
+    let d0 = s.shape.elastic_scale(s.glassy);
     let tm0 = 0.5 * HERTZ_CONTACT_FACTOR * d0;
     let mut h = 0.1 * tm0 * (prec / 1e-6).powf(1.0 / (S as f64 + 2.0)).min(1.0);
 
@@ -329,14 +326,17 @@ impl<const K: usize> Solver<K> {
         // unknowns: the increments z_i = d(t_n + c_i h) - dfix_i (no cancellation for small h)
         let regular = kind == Kind::Regular;
         let shape = self.shape;
+        // the forces at the nodes, and the contact radii there (one inverse of the profile per
+        // node: `w`, its increment from the step start and `w' = (3/2) a` share it)
         let forces = |z: &[f64; S]| {
             let mut dw = [0.0; S]; // W_i - wfix_i
             let mut w = [0.0; S];
+            let mut a = [0.0; S];
             for i in 0..S {
                 let di = (dfix[i] + z[i]).max(0.0);
-                w[i] = shape.w(di);
+                (w[i], a[i]) = shape.w_and_radius(di);
                 dw[i] = if regular {
-                    shape.w_increment(dn, vh * c[i] + z[i])
+                    shape.w_increment_known(dn, vh * c[i] + z[i], wfix, w[i])
                 } else {
                     w[i] - wfix_n[i]
                 };
@@ -349,7 +349,7 @@ impl<const K: usize> Solver<K> {
                 }
                 f[i] = K16 * acc;
             }
-            (dw, f)
+            (dw, f, a)
         };
         let h2 = h * h;
         let mut z = predict_nodes(b, &c, t0, h, &dfix, f_n, pred);
@@ -361,14 +361,19 @@ impl<const K: usize> Solver<K> {
         let mut converged = false;
         for _ in 0..FAST_NEWTON_MAX_ITER {
             self.evaluations += S as u64;
-            let (_, f) = forces(&z);
+            let (_, f, a_nodes) = forces(&z);
             let af = linalg::mul_vec(&b.a, &f);
             let mut r = [0.0; S];
             for i in 0..S {
                 r[i] = -(z[i] + h2 * af[i]);
             }
             // dW_j/dD_j = (3/2) a(D_j) (sqrt(D_j) for the paraboloid)
-            let dw: [f64; S] = std::array::from_fn(|j| self.shape.w_slope(dfix[j] + z[j]));
+            let dw: [f64; S] = std::array::from_fn(|j| 1.5 * a_nodes[j]);
+            // a'(D) at the nodes before the correction (the bounds below need its size only)
+            let a_slope: [f64; S] = std::array::from_fn(|j| {
+                self.shape
+                    .radius_slope_at((dfix[j] + z[j]).max(0.0), a_nodes[j])
+            });
             let mut jf = [[0.0; S]; S];
             for i in 0..S {
                 for j in 0..S {
@@ -394,7 +399,10 @@ impl<const K: usize> Solver<K> {
             }
             let curv = match self.shape.geom {
                 None => 0.5 * h2 * 0.75 * K16 * g_step / dmin.max(0.0).sqrt(),
-                Some(_) => 0.5 * h2 * 1.5 * self.shape.radius_slope(dmin) * K16 * g_step,
+                Some(_) => {
+                    let slope = a_slope.iter().fold(0.0, |m: f64, &x| m.max(x));
+                    0.5 * h2 * 1.5 * slope * K16 * g_step
+                }
             };
             if newton_done(dmax, scale, prev, self.rtol)
                 || quadratic_done(dmax, scale, curv, self.rtol)
@@ -409,11 +417,7 @@ impl<const K: usize> Solver<K> {
                         self.shape
                             .geom
                             .is_some()
-                            .then(|| {
-                                std::array::from_fn(|j| {
-                                    1.5 * self.shape.radius_slope(dfix[j] + z[j])
-                                })
-                            })
+                            .then(|| std::array::from_fn(|j| 1.5 * a_slope[j]))
                             .as_ref(),
                         &delta,
                     ),
@@ -432,7 +436,7 @@ impl<const K: usize> Solver<K> {
                 iterations: FAST_NEWTON_MAX_ITER as u64,
             });
         }
-        let (rw, f) = forces(&z);
+        let (rw, f, a_nodes) = forces(&z);
         let rd = z;
         let seg = Seg {
             t0,
@@ -473,10 +477,7 @@ impl<const K: usize> Solver<K> {
                 }
             }
         }
-        let mut a = [0.0; S];
-        for i in 0..S {
-            a[i] = self.shape.radius_at(dfix[i] + z[i]);
-        }
+        let a = a_nodes;
         // step end from the last node (θ = 1: every power of θ is 1)
         let mut end = Pt {
             d: dfix[S - 1] + z[S - 1],

@@ -291,6 +291,29 @@ impl<const K: usize> Solver<K> {
         Pt { d, v, dd, w, q, s }
     }
 
+    /// `w(d)` of a dense compression output; for a shape other than the paraboloid its `a` and
+    /// `a'` are kept in `last_point` for the Ting root that asked.
+    fn dense_w(&mut self, d: f64) -> f64 {
+        if self.shape.geom.is_none() {
+            return self.shape.w(d);
+        }
+        self.last_point = self.shape.point(d);
+        if d > 0.0 {
+            self.last_point.w
+        } else {
+            0.0
+        }
+    }
+
+    /// The shape's values at `d` (from the last dense output when it was at `d`).
+    pub(super) fn point_at(&self, d: f64) -> ShapePoint {
+        if self.last_point.d == d.max(f64::MIN_POSITIVE) {
+            self.last_point
+        } else {
+            self.shape.point(d)
+        }
+    }
+
     /// Dense compression output at `t1 ∈ [0, t_m]`.
     pub(super) fn comp_at(&mut self, t1: f64) -> Pt<K> {
         self.evaluations += 1;
@@ -334,7 +357,7 @@ impl<const K: usize> Solver<K> {
                 d,
                 v: v * inv_h,
                 dd: 0.0,
-                w: self.shape.w(d),
+                w: self.dense_w(d),
                 q,
                 s,
             };
@@ -364,7 +387,7 @@ impl<const K: usize> Solver<K> {
             d,
             v,
             dd: 0.0,
-            w: self.shape.w(d),
+            w: self.dense_w(d),
             q,
             s,
         }

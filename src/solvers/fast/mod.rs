@@ -2,8 +2,9 @@
 //! indentation `d(t)` alone (docs/theory.md §4–§5), with exact exponential kernels.
 //!
 //! Written for the paraboloid (`w = d^(3/2)` below); any other indenter but the flat punch runs
-//! through [`impact_on`] with its `w(d)` and `a(d)` (docs/theory.md §11; its cost against the
-//! paraboloid is in VALIDATION.md §9).
+//! through [`impact_on`] with its `w(d)` and `a(d)` (module `shape`, docs/theory.md §11; its cost
+//! against the paraboloid is in VALIDATION.md §9), and the flat punch, whose contact radius
+//! never changes, by the modes of its linear ODE (module `flat`).
 //!
 //! # Why no elements
 //! All MDR elements in contact share one rate `u_i' = d'` and leave last-in-first-out
@@ -173,11 +174,13 @@ mod compression;
 mod control;
 mod dense;
 mod driver;
+mod flat;
 mod kernel;
 mod linalg;
 mod newton;
 mod reduce;
 mod restitution;
+mod shape;
 mod ting;
 
 use std::sync::OnceLock;
@@ -196,6 +199,7 @@ use driver::*;
 use linalg::Mat;
 use newton::*;
 use restitution::*;
+use shape::{ShapeFns, ShapePoint};
 use ting::*;
 
 /// Collocation (Radau IIA) nodes per step.
@@ -333,88 +337,9 @@ struct Solver<const K: usize> {
     last_seg: usize,
     /// Time and value of the largest node force of the last solve, when it lies in compression.
     peak_node: Option<(f64, f64)>,
-}
-
-/// The indenter's functions as the steps use them (a copy, free of the solver's borrows).
-#[derive(Debug, Clone, Copy)]
-struct ShapeFns {
-    /// The indenter (canonical, [`crate::model::geometry`]); `None` for the unit paraboloid,
-    /// whose `w = d^(3/2)` has the closed forms of `dense` (bit for bit the solver it was).
-    geom: Option<Geometry>,
-}
-
-impl ShapeFns {
-    /// The force function `w(d)` (`d^(3/2)` for the paraboloid; 0 for `d <= 0`).
-    #[inline]
-    fn w(&self, d: f64) -> f64 {
-        match &self.geom {
-            None => pow15(d),
-            Some(g) => g.force_function(d.max(0.0)),
-        }
-    }
-    /// `w(d + delta) - w(d)`, without cancellation for small `delta` (the paraboloid's closed
-    /// form; otherwise `delta` times the mean of `w' = (3/2) a` by 4-point Gauss–Legendre,
-    /// exact to `O(delta^8)` where `a` is smooth, the difference where the interval crosses 0).
-    #[inline]
-    fn w_increment(&self, d: f64, delta: f64) -> f64 {
-        match &self.geom {
-            None => pow15_increment(d, delta),
-            Some(g) => {
-                let (a, b) = (d, d + delta);
-                if a <= 0.0 || b <= 0.0 {
-                    return g.force_function(b.max(0.0)) - g.force_function(a.max(0.0));
-                }
-                const X: [f64; 4] = [
-                    0.069_431_844_202_973_71,
-                    0.330_009_478_207_571_9,
-                    0.669_990_521_792_428_1,
-                    0.930_568_155_797_026_3,
-                ];
-                const W: [f64; 4] = [
-                    0.173_927_422_568_726_93,
-                    0.326_072_577_431_273_07,
-                    0.326_072_577_431_273_07,
-                    0.173_927_422_568_726_93,
-                ];
-                let mean: f64 = X
-                    .iter()
-                    .zip(W)
-                    .map(|(x, w)| w * g.contact_radius(a + x * delta))
-                    .sum();
-                1.5 * delta * mean
-            }
-        }
-    }
-    /// `w'(d) = (3/2) a(d)`.
-    #[inline]
-    fn w_slope(&self, d: f64) -> f64 {
-        match &self.geom {
-            None => 1.5 * d.max(0.0).sqrt(),
-            Some(g) => g.force_slope(d.max(0.0)),
-        }
-    }
-    /// The contact radius `a(d)`.
-    #[inline]
-    fn radius_at(&self, d: f64) -> f64 {
-        match &self.geom {
-            None => d.max(0.0).sqrt(),
-            Some(g) => g.contact_radius(d.max(0.0)),
-        }
-    }
-    /// `a'(d)` (bounds of the Newton remainders; `1 / (2 sqrt(d))` for the paraboloid), at
-    /// `d` at least the smallest positive number.
-    #[inline]
-    fn radius_slope(&self, d: f64) -> f64 {
-        let d = d.max(f64::MIN_POSITIVE);
-        match &self.geom {
-            None => 0.5 / d.sqrt(),
-            Some(g) => {
-                let h = 1e-6 * d;
-                (g.contact_radius(d + h) - g.contact_radius((d - h).max(0.0)))
-                    / (d + h - (d - h).max(0.0))
-            }
-        }
-    }
+    /// The shape's values at the indentation of the last dense compression output (a shape
+    /// other than the paraboloid: the Ting root that asked for it uses `a` and `a'` there too).
+    last_point: ShapePoint,
 }
 
 /// One converged compression or restitution step.
@@ -481,11 +406,13 @@ pub fn impact(prony: &Prony, rtol: f64, history: bool) -> Result<Outcome> {
 
 /// [`impact`] for the indenter `geometry` (canonical, [`crate::model::geometry`]; `None` or the
 /// unit sphere: the paraboloid): the shape's `w(d)` and `a(d)` in place of `d^(3/2)` and
-/// `sqrt(d)` (docs/theory.md §11). The first step's basis is the paraboloid's (powers of
-/// `sqrt(t)` after `t^(3/2)`): for another shape its step control shrinks the first step until
-/// the mismatch, of the size of `w` over the step, is within the tolerance. Refused
-/// ([`Error::NotSupported`]) for the flat punch, which has no Ting phase, and for an elastic
-/// material on a shape other than the paraboloid (no terms to integrate: `reference` solves it).
+/// `sqrt(d)` (docs/theory.md §11), in closed form for the power laws and by a tabulated
+/// inverse for an exact cap (module `shape`). The first step's basis is the paraboloid's
+/// (powers of `sqrt(t)` after `t^(3/2)`): for another shape its step control shrinks the first
+/// step until the mismatch, of the size of `w` over the step, is within the tolerance. The flat
+/// punch, a linear ODE, is solved by its modes (module `flat`); an elastic material on a power
+/// law in closed form (Sneddon's force and the Beta function); an elastic material on exact
+/// spheres is refused ([`Error::NotSupported`]: `reference` solves it).
 pub fn impact_on(
     geometry: Option<Geometry>,
     prony: &Prony,
@@ -493,20 +420,16 @@ pub fn impact_on(
     history: bool,
 ) -> Result<Outcome> {
     let geom = geometry.filter(|g| *g != Geometry::UNIT_SPHERE);
-    if geom.is_some_and(|g| g.is_flat()) {
-        return Err(Error::NotSupported {
-            solver: SOLVER_NAME,
-            what: "the flat punch (its contact radius never shrinks: no Ting phase); \
-                   reference and mdr solve it"
-                .into(),
-        });
-    }
     let (c_inf, live) = prepare(prony, rtol)?;
-    if geom.is_some() && live.is_empty() {
-        return Err(Error::NotSupported {
+    if geom.is_some_and(|g| g.is_flat()) {
+        // a linear ODE: its modes, every term kept (module `flat`)
+        return flat::flat_impact(c_inf, &live, rtol, history);
+    }
+    if let (Some(g), true) = (geom, live.is_empty()) {
+        return elastic_power_law(g, c_inf, history).ok_or_else(|| Error::NotSupported {
             solver: SOLVER_NAME,
-            what: "an elastic material on an indenter other than the paraboloid (no closed \
-                   form here); reference solves it"
+            what: "an elastic material on exact spheres (no closed form here); reference \
+                   solves it"
                 .into(),
         });
     }
@@ -658,7 +581,7 @@ fn solve_terms<const K: usize>(
     let glassy = c_inf + c[..k].iter().sum::<f64>();
     let mut s = Solver {
         rtol,
-        shape: ShapeFns { geom },
+        shape: ShapeFns::new(geom),
         min_tol_scale: FAST_MIN_TOL_SCALE,
         accept_step: 0.0,
         root_force_tol: 0.0,
@@ -677,6 +600,7 @@ fn solve_terms<const K: usize>(
         evaluations: 0,
         last_seg: 0,
         peak_node: None,
+        last_point: ShapePoint::default(),
     };
     match mode {
         Mode::Verified => verified(&mut s, rtol, history),
@@ -710,6 +634,50 @@ fn hertz(c_inf: f64, history: bool) -> Outcome {
         solver: Method::Fast,
         fallback: None,
     }
+}
+
+/// The elastic impact on a power law `g = k x^n` (the cone: `n = 1`) in closed form
+/// (docs/theory.md §11): `F = K d^p`, `p = 1 + 1/n`, `K = (16/3) c_inf (3/2) n/(n+1) k^(-1/n)`;
+/// `d_max = ((p+1) / (2K))^(1/(p+1))`, `t_c = 2 d_max B(1/(p+1), 1/2) / (p+1)`,
+/// `F_max = K d_max^p`, `e = 1`. `None` for other geometries.
+fn elastic_power_law(geom: Geometry, c_inf: f64, history: bool) -> Option<Outcome> {
+    let Geometry::PowerLaw {
+        exponent: n,
+        coefficient: k,
+    } = geom
+    else {
+        return None;
+    };
+    use statrs::function::gamma::ln_gamma;
+    let p = 1.0 + 1.0 / n;
+    let q = p + 1.0;
+    let kf = K16 * c_inf * 1.5 * n / (n + 1.0) * k.powf(-1.0 / n);
+    let d_max = (q / (2.0 * kf)).powf(1.0 / q);
+    let beta = (ln_gamma(1.0 / q) + ln_gamma(0.5) - ln_gamma(1.0 / q + 0.5)).exp();
+    let tc = 2.0 * d_max * beta / q;
+    let f_max = kf * d_max.powf(p);
+    let a_max = (d_max / k).powf(1.0 / n);
+    Some(Outcome {
+        cor: 1.0,
+        rebound_velocity: 1.0,
+        contact_time: tc,
+        max_indentation: d_max,
+        time_of_max_indentation: 0.5 * tc,
+        max_force: f_max,
+        max_contact_radius: a_max,
+        dissipated_energy: 0.0,
+        cor_error_estimate: Some(0.0),
+        history: history.then(|| {
+            let mut h = History::default();
+            h.push(0.0, 0.0, 1.0, 0.0, 0.0);
+            h.push(0.5 * tc, d_max, 0.0, f_max, a_max);
+            h.push(tc, 0.0, -1.0, 0.0, 0.0);
+            h
+        }),
+        work: Work::default(),
+        solver: Method::Fast,
+        fallback: None,
+    })
 }
 
 /// The `fast` solver behind the solver interface: [`impact`] on the contact's `G_eq`.

@@ -296,6 +296,24 @@ pub(super) fn restitute<const K: usize>(
 }
 
 impl<const K: usize> Solver<K> {
+    /// `w'` at a Ting root's `d(t_1)` (for a shape other than the paraboloid from the root's
+    /// `a`, taken before its first-order move, when it has one).
+    fn root_w_slope(&self, r: &Root) -> f64 {
+        match self.shape.geom {
+            Some(_) if r.a1 > 0.0 => 1.5 * r.a1,
+            _ => self.shape.w_slope(r.d1),
+        }
+    }
+
+    /// `a'` at a Ting root's `d(t_1)` (as [`Solver::root_w_slope`]).
+    fn root_radius_slope(&self, r: &Root) -> f64 {
+        if r.a1 > 0.0 {
+            r.a1_slope
+        } else {
+            self.shape.radius_slope(r.d1)
+        }
+    }
+
     /// One restitution step of length `h`. `t1_guess`: guesses of `t_1` at the nodes;
     /// `omega`: when they come from the polynomial through the last step's nodes, its node
     /// polynomial `Π_j (θ - c_j)` at each node (`θ` in units of that step), to correct the
@@ -404,7 +422,7 @@ impl<const K: usize> Solver<K> {
             let mut jf = [[0.0; S]; S];
             for i in 0..S {
                 if t1[i] > 0.0 {
-                    let g = K16 * self.shape.w_slope(d1[i]);
+                    let g = K16 * self.root_w_slope(&roots[i]);
                     for j in 0..S {
                         jf[i][j] = g * (cn[i][j] + if i == j { self.c_inf } else { 0.0 });
                     }
@@ -447,7 +465,7 @@ impl<const K: usize> Solver<K> {
                 rem_f[i] = match self.shape.geom {
                     None => 2.0 * psi * psi / (r.d1.sqrt() * r.g),
                     // d²F/dψ² = 8 a'(d(t_1)) / G_eq (the paraboloid's 4 / (sqrt(d) G_eq))
-                    Some(_) => 4.0 * self.shape.radius_slope(r.d1) * psi * psi / r.g,
+                    Some(_) => 4.0 * self.root_radius_slope(r) * psi * psi / r.g,
                 };
             }
             let rem = rem_f.iter().fold(0.0, |acc: f64, &x| acc.max(x));

@@ -19,6 +19,10 @@ pub(super) struct Root {
     pub(super) v1: f64,
     /// `G_eq(t - t_1)`.
     pub(super) g: f64,
+    /// `a` and `a'` at `d(t_1)` before the first-order move (a shape other than the
+    /// paraboloid; 0 otherwise).
+    pub(super) a1: f64,
+    pub(super) a1_slope: f64,
 }
 
 impl<const K: usize> Solver<K> {
@@ -58,6 +62,8 @@ impl<const K: usize> Solver<K> {
                 d1,
                 v1: pt.v,
                 g,
+                a1: 0.0,
+                a1_slope: 0.0,
             };
             if phi > 0.0 {
                 lo = x;
@@ -74,9 +80,10 @@ impl<const K: usize> Solver<K> {
                 return Ok(root(x, K16 * f, pt.d));
             }
             // d²F/dφ² = 8 a'(d(t_1)) / G_eq: 4 / (sqrt(d) G_eq) for the paraboloid
-            let sd = match self.shape.geom {
+            let sp = self.shape.geom.map(|_| self.point_at(pt.d));
+            let sd = match sp {
                 None => pt.d.max(0.0).sqrt(),
-                Some(_) => 0.5 / self.shape.radius_slope(pt.d),
+                Some(p) => 0.5 / p.a_slope,
             };
             // Accept the Newton point when it is close (`accept_step`), or when the force
             // there, moved to first order, is exact to FAST_ROOT_LEVEL rtol relative or to
@@ -91,8 +98,13 @@ impl<const K: usize> Solver<K> {
                 // quadratic convergence: the Newton point is exact to ~step^2; move F and d
                 // there to first order (dF/dt_1 = (16/3) G_eq(t - t_1) w'(t_1))
                 let dx = newton - x;
-                let df = K16 * self.shape.w_slope(pt.d) * pt.v * g;
-                return Ok(root(newton, K16 * f + df * dx, pt.d + pt.v * dx));
+                let df =
+                    K16 * sp.map_or_else(|| self.shape.w_slope(pt.d), |p| 1.5 * p.a) * pt.v * g;
+                let mut r = root(newton, K16 * f + df * dx, pt.d + pt.v * dx);
+                if let Some(p) = sp {
+                    (r.a1, r.a1_slope) = (p.a, p.a_slope);
+                }
+                return Ok(r);
             }
             x = if newton > lo && newton < hi {
                 newton
