@@ -332,6 +332,7 @@ pub(super) fn flat_impact(
             element_updates: 0,
             evaluations: m.evaluations,
             levels: 1,
+            tight_checks: 0,
         },
         solver: Method::Fast,
         fallback: None,
