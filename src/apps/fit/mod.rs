@@ -10,7 +10,9 @@
 //! - Coordinates: `ln` of every modulus and viscosity (positivity) and the logistic coordinate
 //!   of `nu` in `(-1, 0.5)` ([`model::ParamKind`]); fixed parameters (`--fix`) are left out.
 //! - Multi-start: a grid over the physically sensible box (`p2 = g_inf / g_1` from 1e-4 to 1,
-//!   `p3` at the data's mean velocity from 0.03 to 300, `nu` from -0.5 to 0.49, and with contact times
+//!   `p3` at the data's mean velocity from 0.03 to 300, `nu` at -0.5, 0, 0.3, 0.4, 0.45, 0.47,
+//!   0.48 and 0.49 (denser near 0.5, where `1 - 2 nu` sets the bulk-to-shear ratio and the
+//!   misfit has narrow valleys along `nu`), and with contact times
 //!   `g_inf` from 1e-3 to 1 times the Hertz modulus of the measured contact times) is screened at
 //!   a loose rtol; Levenberg–Marquardt (the `levenberg-marquardt` crate, MINPACK's algorithm, with
 //!   central-difference Jacobians) runs from the best [`FIT_LM_STARTS`] of them and from the best
