@@ -65,6 +65,7 @@ pub mod checks;
 pub mod data;
 mod global;
 pub mod model;
+mod profile;
 pub mod report;
 mod starts;
 pub mod study;
@@ -79,8 +80,8 @@ use crate::error::{Error, Result};
 use crate::model::impact::Impact;
 use crate::model::tolerances::{
     FIT_FD_STEP, FIT_LM_PATIENCE, FIT_LM_STARTS, FIT_LM_TOL, FIT_MAX_HALF_WIDTH,
-    FIT_NULL_COMPONENT, FIT_NULL_RATIO, FIT_PROFILE_STEP, FIT_PROFILE_STEPS, FIT_RTOL,
-    FIT_SCREEN_RTOL,
+    FIT_NULL_COMPONENT, FIT_NULL_RATIO, FIT_PROFILE_OTHERS, FIT_PROFILE_OTHERS_SSR,
+    FIT_PROFILE_STEP, FIT_PROFILE_STEPS, FIT_RTOL, FIT_SCREEN_RTOL,
 };
 use crate::solvers::{solve, SolveOptions, SolverKind};
 use analysis::analyse;
@@ -328,6 +329,16 @@ impl<'a> Ctx<'a> {
     /// Levenberg–Marquardt from `coords` over the coordinates `moving` (the others held):
     /// the misfit (SSR) and parameter values at the end.
     fn minimise(&self, coords: Vec<f64>, moving: &[usize]) -> Result<(f64, Vec<f64>)> {
+        self.minimise_with(coords, moving, None)
+    }
+
+    /// [`Ctx::minimise`] with the constraint `tie` kept (when given).
+    fn minimise_with(
+        &self,
+        coords: Vec<f64>,
+        moving: &[usize],
+        tie: Option<&profile::Tie>,
+    ) -> Result<(f64, Vec<f64>)> {
         if moving.is_empty() {
             let values = self.values(&coords);
             return Ok((ssr(&self.residuals(&values, FIT_RTOL)?), values));
@@ -342,6 +353,7 @@ impl<'a> Ctx<'a> {
             coords,
             moving: moving.to_vec(),
             failure: RefCell::new(None),
+            tie: tie.cloned(),
         };
         let (p, report) = lm.minimize(problem);
         let values = self.values(&p.coords);
@@ -431,15 +443,27 @@ impl<'a> Ctx<'a> {
     }
 
     /// Central-difference Jacobian of the weighted residuals with respect to the coordinates
-    /// `moving` at `coords`.
-    fn jacobian(&self, coords: &[f64], moving: &[usize]) -> Result<Vec<Vec<f64>>> {
+    /// `moving` at `coords` (with the constraint `tie` kept, when given).
+    fn jacobian(
+        &self,
+        coords: &[f64],
+        moving: &[usize],
+        tie: Option<&profile::Tie>,
+    ) -> Result<Vec<Vec<f64>>> {
         let mut cols = Vec::with_capacity(moving.len());
+        let at = |c: &mut Vec<f64>| {
+            if let Some(t) = tie {
+                t.apply(c);
+            }
+            self.residuals(&self.values(c), self.lm_rtol.get())
+        };
         for &j in moving {
             let mut c = coords.to_vec();
             c[j] = coords[j] + FIT_FD_STEP;
-            let plus = self.residuals(&self.values(&c), self.lm_rtol.get())?;
+            let plus = at(&mut c)?;
+            let mut c = coords.to_vec();
             c[j] = coords[j] - FIT_FD_STEP;
-            let minus = self.residuals(&self.values(&c), self.lm_rtol.get())?;
+            let minus = at(&mut c)?;
             cols.push(
                 plus.iter()
                     .zip(&minus)
@@ -458,6 +482,8 @@ struct LmProblem<'a, 'b> {
     coords: Vec<f64>,
     moving: Vec<usize>,
     failure: RefCell<Option<Error>>,
+    /// A constraint kept while the coordinates move (a profile point, [`profile`]).
+    tie: Option<profile::Tie>,
 }
 
 impl LmProblem<'_, '_> {
@@ -475,6 +501,9 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for LmProblem<'_, '_> {
         for (k, &j) in self.moving.iter().enumerate() {
             self.coords[j] = x[k];
         }
+        if let Some(t) = &self.tie {
+            t.apply(&mut self.coords);
+        }
     }
     fn params(&self) -> LmVector<f64> {
         LmVector::from_iterator(
@@ -490,7 +519,10 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for LmProblem<'_, '_> {
         Some(LmVector::from_vec(r))
     }
     fn jacobian(&self) -> Option<LmMatrix<f64>> {
-        let cols = self.note(self.ctx.jacobian(&self.coords, &self.moving))?;
+        let cols = self.note(
+            self.ctx
+                .jacobian(&self.coords, &self.moving, self.tie.as_ref()),
+        )?;
         let m = cols.first().map_or(0, Vec::len);
         Some(LmMatrix::from_fn(m, cols.len(), |i, j| cols[j][i]))
     }
