@@ -36,12 +36,15 @@
 //! 2. the noise scale is known (every `*_sd` given) or there are residual degrees of freedom to
 //!    estimate it (`s^2 = SSR / (n - rank)`), and
 //! 3. its 95 % interval is bounded: the Wald interval when it reaches at most
-//!    [`FIT_MAX_HALF_WIDTH`] (a factor of 10 for a modulus) from the estimate in its coordinate;
+//!    [`FIT_MAX_HALF_WIDTH`] (a factor of 10 for a modulus) from the estimate in its coordinate
+//!    and the profile misfit at each end and 1.5 half-widths out lies at or above the threshold
+//!    (else the end moves out to where the profile crosses, and the quantity is not determined
+//!    when that lies beyond [`FIT_MAX_HALF_WIDTH`]; docs/theory.md §14.1, `profile.rs`);
 //!    otherwise, for a parameter, the profile-likelihood interval, which must close on both
 //!    sides within [`FIT_PROFILE_STEPS`] steps of [`FIT_PROFILE_STEP`] (four decades; else the
 //!    value is reported with `identifiable: false` and no interval). A group whose Wald interval
-//!    is too wide is reported `identifiable: false` with that interval (groups are not
-//!    profiled).
+//!    is too wide is reported `identifiable: false` with that interval; a group whose Wald
+//!    interval is narrow enough has its ends checked against its profile like a parameter.
 //!
 //! The Wald interval is `a x ± q sqrt(s^2 a^T V S^-2 V^T a)` (range of `V` only), mapped back
 //! to the parameter (`exp`, logistic), with `q` the normal quantile when the noise is known and
