@@ -69,6 +69,12 @@ pub const FIT_LM_STARTS: usize = 2;
 pub const FIT_PROFILE_STEP: f64 = std::f64::consts::LN_10 / 4.0;
 /// `fit`: steps of the profile likelihood on each side (four decades).
 pub const FIT_PROFILE_STEPS: usize = 16;
+/// `fit`: other minima met by the fit that also start the profile minimisations which check
+/// the ends of the Wald intervals (besides the previous profile point).
+pub const FIT_PROFILE_OTHERS: usize = 2;
+/// `fit`: those minima are taken only when their misfit is at most this factor times the
+/// estimate's (at least 1).
+pub const FIT_PROFILE_OTHERS_SSR: f64 = 3.0;
 
 /// Absolute accuracy floor of the tangential CoR of an oblique `mdr` run: the adaptive driver
 /// accepts `v_c' / v_c` at `max(rtol, OBLIQUE_TANGENTIAL_ATOL)` (absolute; the normal CoR keeps

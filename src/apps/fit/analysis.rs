@@ -2,6 +2,7 @@
 //! confidence intervals (normal or Student's `t`), identifiability of parameters and groups, and
 //! the verdict.
 
+use super::profile::End;
 use super::*;
 
 /// Uncertainty and identifiability at the estimate (module docs).
@@ -25,7 +26,7 @@ pub(super) fn analyse(
     let cols = if free.is_empty() {
         Vec::new()
     } else {
-        ctx.jacobian(&coords, free)?
+        ctx.jacobian(&coords, free, None)?
     };
     let j = nalgebra::DMatrix::from_fn(n, free.len(), |i, k| cols[k][i]);
     let (sv, v_t) = if free.is_empty() {
@@ -209,6 +210,65 @@ pub(super) fn analyse(
     let mut groups = groups;
     if let (Some(s), Some(q)) = (noise_scale, quantile) {
         let threshold = q * q * s * s;
+        // the ends of every Wald interval against the profile misfit (profile.rs)
+        let starts = profile_starts(ctx, &coords, best_ssr, others, moving);
+        let check = |e: &mut Estimate, a: &[f64], x: f64, back: &dyn Fn(f64) -> f64| {
+            let (Some(se), Some(_), true, false) = (e.se, e.ci95, e.identifiable, e.fixed) else {
+                return;
+            };
+            let h = q * se;
+            let end = |sign: f64| {
+                ctx.check_end(
+                    a,
+                    (x, h, sign),
+                    &coords,
+                    best_ssr,
+                    threshold,
+                    moving,
+                    &starts,
+                )
+            };
+            let offset = |end: End| match end {
+                End::Moved(o) => Some(o),
+                End::Kept => Some(h),
+                End::Open => None,
+            };
+            let (lo, hi) = (end(-1.0), end(1.0));
+            if (lo, hi) == (End::Kept, End::Kept) {
+                return;
+            }
+            match (offset(lo), offset(hi)) {
+                (Some(l), Some(u)) => {
+                    let (a, b) = (back(x - l), back(x + u));
+                    e.ci95 = Some((a.min(b), a.max(b)));
+                    e.note = "interval extended along the profile misfit (it lay within the 95 % \
+                              threshold at an end of the Wald interval)"
+                        .into();
+                }
+                _ => {
+                    e.ci95 = None;
+                    e.identifiable = false;
+                    e.note = "not determined: the profile misfit stays within the 95 % threshold \
+                              beyond a factor 10 (in the coordinate) from the estimate, flat or \
+                              with another basin"
+                        .into();
+                }
+            }
+        };
+        for &i in moving {
+            let mut a = vec![0.0; np];
+            a[i] = 1.0;
+            let kind = model.params[i].kind;
+            check(&mut parameters[i], &a, coords[i], &|c| kind.from_coord(c));
+        }
+        for (e, (_, value, mut grad)) in groups.iter_mut().zip(model.groups(&values)) {
+            for (g, f) in grad.iter_mut().zip(fixed) {
+                if f.is_some() {
+                    *g = 0.0;
+                }
+            }
+            check(e, &grad, value.ln(), &f64::exp);
+        }
         // the profile likelihood where the Wald interval is too wide to trust
         for &i in moving {
             let e = &mut parameters[i];
@@ -293,6 +353,33 @@ pub(super) fn analyse(
         goodness: None,
         warnings: Vec::new(),
     })
+}
+
+/// Extra starting points of the profile minimisations: the other minima met by the fit within
+/// [`FIT_PROFILE_OTHERS_SSR`] times the misfit of the estimate that lie away from it (some moving
+/// coordinate differs by more than [`FIT_PROFILE_STEP`]), best first, at most
+/// [`FIT_PROFILE_OTHERS`] of them (coordinates).
+fn profile_starts(
+    ctx: &Ctx,
+    coords: &[f64],
+    best_ssr: f64,
+    others: &[(f64, Vec<f64>)],
+    moving: &[usize],
+) -> Vec<Vec<f64>> {
+    let mut near: Vec<&(f64, Vec<f64>)> = others
+        .iter()
+        .filter(|(s, _)| *s <= FIT_PROFILE_OTHERS_SSR * best_ssr.max(1.0))
+        .collect();
+    near.sort_by(|a, b| a.0.total_cmp(&b.0));
+    near.into_iter()
+        .map(|(_, v)| ctx.coords(v))
+        .filter(|c| {
+            moving
+                .iter()
+                .any(|&i| (c[i] - coords[i]).abs() > FIT_PROFILE_STEP)
+        })
+        .take(FIT_PROFILE_OTHERS)
+        .collect()
 }
 
 /// One line: which parameters and groups the data determine.

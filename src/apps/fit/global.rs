@@ -26,6 +26,7 @@ impl Ctx<'_> {
             coords,
             moving: moving.to_vec(),
             failure: RefCell::new(None),
+            tie: None,
         };
         let (p, _) = lm.minimize(problem);
         self.lm_rtol.set(FIT_RTOL);

@@ -10,7 +10,9 @@
 //! - Coordinates: `ln` of every modulus and viscosity (positivity) and the logistic coordinate
 //!   of `nu` in `(-1, 0.5)` ([`model::ParamKind`]); fixed parameters (`--fix`) are left out.
 //! - Multi-start: a grid over the physically sensible box (`p2 = g_inf / g_1` from 1e-4 to 1,
-//!   `p3` at the data's mean velocity from 0.03 to 300, `nu` from -0.5 to 0.49, and with contact times
+//!   `p3` at the data's mean velocity from 0.03 to 300, `nu` at -0.5, 0, 0.3, 0.4, 0.45, 0.47,
+//!   0.48 and 0.49 (denser near 0.5, where `1 - 2 nu` sets the bulk-to-shear ratio and the
+//!   misfit has narrow valleys along `nu`), and with contact times
 //!   `g_inf` from 1e-3 to 1 times the Hertz modulus of the measured contact times) is screened at
 //!   a loose rtol; Levenberg–Marquardt (the `levenberg-marquardt` crate, MINPACK's algorithm, with
 //!   central-difference Jacobians) runs from the best [`FIT_LM_STARTS`] of them and from the best
@@ -34,12 +36,15 @@
 //! 2. the noise scale is known (every `*_sd` given) or there are residual degrees of freedom to
 //!    estimate it (`s^2 = SSR / (n - rank)`), and
 //! 3. its 95 % interval is bounded: the Wald interval when it reaches at most
-//!    [`FIT_MAX_HALF_WIDTH`] (a factor of 10 for a modulus) from the estimate in its coordinate;
+//!    [`FIT_MAX_HALF_WIDTH`] (a factor of 10 for a modulus) from the estimate in its coordinate
+//!    and the profile misfit at each end and 1.5 half-widths out lies at or above the threshold
+//!    (else the end moves out to where the profile crosses, and the quantity is not determined
+//!    when that lies beyond [`FIT_MAX_HALF_WIDTH`]; docs/theory.md §16.1, `profile.rs`);
 //!    otherwise, for a parameter, the profile-likelihood interval, which must close on both
 //!    sides within [`FIT_PROFILE_STEPS`] steps of [`FIT_PROFILE_STEP`] (four decades; else the
 //!    value is reported with `identifiable: false` and no interval). A group whose Wald interval
-//!    is too wide is reported `identifiable: false` with that interval (groups are not
-//!    profiled).
+//!    is too wide is reported `identifiable: false` with that interval; a group whose Wald
+//!    interval is narrow enough has its ends checked against its profile like a parameter.
 //!
 //! The Wald interval is `a x ± q sqrt(s^2 a^T V S^-2 V^T a)` (range of `V` only), mapped back
 //! to the parameter (`exp`, logistic), with `q` the normal quantile when the noise is known and
@@ -63,6 +68,7 @@ pub mod checks;
 pub mod data;
 mod global;
 pub mod model;
+mod profile;
 pub mod report;
 mod starts;
 pub mod study;
@@ -77,8 +83,8 @@ use crate::error::{Error, Result};
 use crate::model::impact::Impact;
 use crate::model::tolerances::{
     FIT_FD_STEP, FIT_LM_PATIENCE, FIT_LM_STARTS, FIT_LM_TOL, FIT_MAX_HALF_WIDTH,
-    FIT_NULL_COMPONENT, FIT_NULL_RATIO, FIT_PROFILE_STEP, FIT_PROFILE_STEPS, FIT_RTOL,
-    FIT_SCREEN_RTOL,
+    FIT_NULL_COMPONENT, FIT_NULL_RATIO, FIT_PROFILE_OTHERS, FIT_PROFILE_OTHERS_SSR,
+    FIT_PROFILE_STEP, FIT_PROFILE_STEPS, FIT_RTOL, FIT_SCREEN_RTOL,
 };
 use crate::solvers::{solve, SolveOptions, SolverKind};
 use analysis::analyse;
@@ -326,6 +332,16 @@ impl<'a> Ctx<'a> {
     /// Levenberg–Marquardt from `coords` over the coordinates `moving` (the others held):
     /// the misfit (SSR) and parameter values at the end.
     fn minimise(&self, coords: Vec<f64>, moving: &[usize]) -> Result<(f64, Vec<f64>)> {
+        self.minimise_with(coords, moving, None)
+    }
+
+    /// [`Ctx::minimise`] with the constraint `tie` kept (when given).
+    fn minimise_with(
+        &self,
+        coords: Vec<f64>,
+        moving: &[usize],
+        tie: Option<&profile::Tie>,
+    ) -> Result<(f64, Vec<f64>)> {
         if moving.is_empty() {
             let values = self.values(&coords);
             return Ok((ssr(&self.residuals(&values, FIT_RTOL)?), values));
@@ -340,6 +356,7 @@ impl<'a> Ctx<'a> {
             coords,
             moving: moving.to_vec(),
             failure: RefCell::new(None),
+            tie: tie.cloned(),
         };
         let (p, report) = lm.minimize(problem);
         let values = self.values(&p.coords);
@@ -429,15 +446,27 @@ impl<'a> Ctx<'a> {
     }
 
     /// Central-difference Jacobian of the weighted residuals with respect to the coordinates
-    /// `moving` at `coords`.
-    fn jacobian(&self, coords: &[f64], moving: &[usize]) -> Result<Vec<Vec<f64>>> {
+    /// `moving` at `coords` (with the constraint `tie` kept, when given).
+    fn jacobian(
+        &self,
+        coords: &[f64],
+        moving: &[usize],
+        tie: Option<&profile::Tie>,
+    ) -> Result<Vec<Vec<f64>>> {
         let mut cols = Vec::with_capacity(moving.len());
+        let at = |c: &mut Vec<f64>| {
+            if let Some(t) = tie {
+                t.apply(c);
+            }
+            self.residuals(&self.values(c), self.lm_rtol.get())
+        };
         for &j in moving {
             let mut c = coords.to_vec();
             c[j] = coords[j] + FIT_FD_STEP;
-            let plus = self.residuals(&self.values(&c), self.lm_rtol.get())?;
+            let plus = at(&mut c)?;
+            let mut c = coords.to_vec();
             c[j] = coords[j] - FIT_FD_STEP;
-            let minus = self.residuals(&self.values(&c), self.lm_rtol.get())?;
+            let minus = at(&mut c)?;
             cols.push(
                 plus.iter()
                     .zip(&minus)
@@ -456,6 +485,8 @@ struct LmProblem<'a, 'b> {
     coords: Vec<f64>,
     moving: Vec<usize>,
     failure: RefCell<Option<Error>>,
+    /// A constraint kept while the coordinates move (a profile point, [`profile`]).
+    tie: Option<profile::Tie>,
 }
 
 impl LmProblem<'_, '_> {
@@ -473,6 +504,9 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for LmProblem<'_, '_> {
         for (k, &j) in self.moving.iter().enumerate() {
             self.coords[j] = x[k];
         }
+        if let Some(t) = &self.tie {
+            t.apply(&mut self.coords);
+        }
     }
     fn params(&self) -> LmVector<f64> {
         LmVector::from_iterator(
@@ -488,7 +522,10 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for LmProblem<'_, '_> {
         Some(LmVector::from_vec(r))
     }
     fn jacobian(&self) -> Option<LmMatrix<f64>> {
-        let cols = self.note(self.ctx.jacobian(&self.coords, &self.moving))?;
+        let cols = self.note(
+            self.ctx
+                .jacobian(&self.coords, &self.moving, self.tie.as_ref()),
+        )?;
         let m = cols.first().map_or(0, Vec::len);
         Some(LmMatrix::from_fn(m, cols.len(), |i, j| cols[j][i]))
     }

@@ -50,7 +50,9 @@ pub(super) fn candidates(
     };
     let p2s = [1e-4, 1e-3, 1e-2, 3e-2, 1e-1, 3e-1, 1.0];
     let p3s = [0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 300.0];
-    let nus = [-0.5, 0.0, 0.3, 0.45, 0.49];
+    // denser towards 0.5, where the bulk-to-shear ratio 2 (1 + nu) / (3 (1 - 2 nu)) changes
+    // fastest: a basin between 0.45 and 0.49 (or 0.3 and 0.45) was missed with coarser levels
+    let nus = [-0.5, 0.0, 0.3, 0.4, 0.45, 0.47, 0.48, 0.49];
     let mut out = Vec::new();
     for &g in &g_levels {
         for &p2 in &p2s {
