@@ -18,8 +18,8 @@ MATERIAL = dict(g_inf=1.0e6, g_1=1.0e7, eta=500.0, poisson=0.49)
             dict(shape="power-law", exponent=3.0, coefficient=2.0e4),
             "fast",
         ),
-        # no Ting phase: fast refuses the flat punch and auto hands it to reference
-        ("flat_punch.toml", dict(shape="flat", radius=1.0e-3), "reference"),
+        # no Ting phase: fast solves the flat punch by the modes of its linear ODE
+        ("flat_punch.toml", dict(shape="flat", radius=1.0e-3), "fast"),
     ],
 )
 def test_indenter_objects_match_the_scene_and_the_cli(cli, root, scene_file, indenter, solver):
