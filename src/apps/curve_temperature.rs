@@ -58,15 +58,7 @@ impl TemperatureRange {
 
     /// The temperatures (°C), `min` and `max` included.
     pub fn values(&self) -> Vec<f64> {
-        (0..self.n)
-            .map(|i| {
-                if i + 1 == self.n {
-                    self.max
-                } else {
-                    self.min + (self.max - self.min) * i as f64 / (self.n - 1) as f64
-                }
-            })
-            .collect()
+        crate::math::linspace(self.min, self.max, self.n)
     }
 }
 

@@ -407,15 +407,7 @@ pub fn prony_times(kind: &ModelKind, range: Option<&str>, data: &Data) -> Result
             (a, b)
         }
     };
-    Ok((0..n)
-        .map(|i| {
-            if n == 1 {
-                (lo * hi).sqrt()
-            } else {
-                (lo.ln() + (hi / lo).ln() * i as f64 / (n - 1) as f64).exp()
-            }
-        })
-        .collect())
+    Ok(crate::math::logspace(lo, hi, n))
 }
 
 #[cfg(test)]

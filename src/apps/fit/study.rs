@@ -103,9 +103,9 @@ pub fn exact_data(cfg: &StudyConfig) -> Result<Data> {
     };
     let n = cfg.velocities.max(2);
     let (lo, hi) = VELOCITIES;
-    let observations = (0..n)
-        .map(|k| {
-            let v0 = (lo.ln() + (hi / lo).ln() * k as f64 / (n - 1) as f64).exp();
+    let observations = crate::math::logspace(lo, hi, n)
+        .into_iter()
+        .map(|v0| {
             let o = solve(&model.impact(sphere, v0, &TRUTH)?, &opts)?;
             Ok(Observation {
                 setup: 0,

@@ -138,10 +138,11 @@ fn skeleton(cfg: &BoxConfig, contact_times: bool, noise: f64) -> Result<Data> {
     let sphere = Sphere::new(SPHERE.0, SPHERE.1)?;
     let n = cfg.velocities;
     let (lo, hi) = BOX_VELOCITIES;
-    let observations = (0..n)
-        .map(|k| Observation {
+    let observations = crate::math::logspace(lo, hi, n)
+        .into_iter()
+        .map(|v0| Observation {
             setup: 0,
-            v0: (lo.ln() + (hi / lo).ln() * k as f64 / (n - 1) as f64).exp(),
+            v0,
             cor: 0.5,
             cor_sd: Some(noise),
             contact_time: contact_times.then_some(1.0),
