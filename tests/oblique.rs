@@ -317,22 +317,22 @@ fn cli_run_json_and_curve_angle() {
 }
 
 #[test]
-#[ignore = "slow (seven mdr solves); its numbers are VALIDATION.md 1g's DEM table"]
+#[ignore = "slow (seven mdr solves); its numbers are VALIDATION.md 1g's DEM tables"]
 fn dem_mindlin_models_against_mdr() {
-    use mdr_impact::report::validate::oblique::{dem_row, DEM_ANGLES};
+    use mdr_impact::apps::dem::tangential::DemTangential;
+    use mdr_impact::report::validate::oblique_dem::{dem_row, DEM_ANGLES};
     for th in DEM_ANGLES {
-        let (m, a, b) = dem_row(th).unwrap();
-        eprintln!(
-            "{th}: mdr {m:.5} mindlin {a:.5} ({:+.1e}) mindlin/force {b:.5} ({:+.1e})",
-            a - m,
-            b - m
-        );
-        if th >= 45.0 {
-            // gross slip: every model gives the exact answer (to its time step)
-            assert!(
-                (a - m).abs() < 2e-3 && (b - m).abs() < 2e-3,
-                "{th}: {m} {a} {b}"
+        let (m, emu) = dem_row(th).unwrap();
+        for (e, model) in emu.iter().zip(DemTangential::ALL) {
+            eprintln!(
+                "{th}: mdr {m:.5} {} {e:.5} ({:+.1e})",
+                model.keyword(),
+                e - m
             );
+            if th >= 45.0 {
+                // gross slip: every model gives the exact answer (to its time step)
+                assert!((e - m).abs() < 2e-3, "{th} {}: {m} {e}", model.keyword());
+            }
         }
     }
 }

@@ -11,10 +11,15 @@
 //!   tangential displacement `xi`, `F_t = -k_t(a) xi` with the current stiffness, `xi` rescaled
 //!   to the Coulomb limit when the trial force exceeds it;
 //! - [`DemTangential::MindlinForce`] (`tangential mindlin/force`): the history is the force,
-//!   incremented by `-k_t dxi` and clipped to the Coulomb limit (LIGGGHTS's
-//!   `tangential_model history` follows the same incremental idea with its own stiffness).
+//!   incremented by `-k_t dxi` and clipped to the Coulomb limit;
+//! - [`DemTangential::MindlinRescale`] and [`DemTangential::MindlinRescaleForce`]
+//!   (`mindlin_rescale`, `mindlin_rescale/force`): the same, but while the contact shrinks
+//!   (`a` below the previous step's) the history is first scaled by `a / a_prev`.
 //!
-//! Velocity Verlet with `steps` steps over the Hertz contact time (the force model is explicit).
+//! Velocity Verlet with `steps` steps over the Hertz contact time (the force model is explicit),
+//! the order of LAMMPS's `nve/sphere` with its granular contacts: half kick, drift, history
+//! update with the half-step slip velocity, force, half kick. The real codes run the same
+//! bounce in `validation/dem_clients/oblique.py`; VALIDATION.md 1g compares both.
 
 use crate::error::{check, Result};
 
@@ -25,6 +30,10 @@ pub enum DemTangential {
     Mindlin,
     /// `tangential mindlin/force` (incremental force history).
     MindlinForce,
+    /// `tangential mindlin_rescale` (displacement history scaled down as the contact shrinks).
+    MindlinRescale,
+    /// `tangential mindlin_rescale/force` (force history scaled down as the contact shrinks).
+    MindlinRescaleForce,
 }
 
 impl DemTangential {
@@ -33,7 +42,33 @@ impl DemTangential {
         match self {
             DemTangential::Mindlin => "mindlin",
             DemTangential::MindlinForce => "mindlin/force",
+            DemTangential::MindlinRescale => "mindlin_rescale",
+            DemTangential::MindlinRescaleForce => "mindlin_rescale/force",
         }
+    }
+
+    /// Every model, in LAMMPS's order.
+    pub const ALL: [DemTangential; 4] = [
+        DemTangential::Mindlin,
+        DemTangential::MindlinRescale,
+        DemTangential::MindlinForce,
+        DemTangential::MindlinRescaleForce,
+    ];
+
+    /// True when the history is the force (`/force`), false when it is the displacement.
+    fn force_history(self) -> bool {
+        matches!(
+            self,
+            DemTangential::MindlinForce | DemTangential::MindlinRescaleForce
+        )
+    }
+
+    /// True when the history is scaled down as the contact shrinks (`_rescale`).
+    fn rescales(self) -> bool {
+        matches!(
+            self,
+            DemTangential::MindlinRescale | DemTangential::MindlinRescaleForce
+        )
     }
 }
 
@@ -64,32 +99,37 @@ pub fn dem_tangential_cor(
     let t_c = 2.943_275_184_324_704_7 * d_max / v_n;
     let dt = t_c / steps as f64;
     let (mut d, mut vn) = (0.0f64, v_n);
-    let (mut xi, mut ft, mut vc) = (0.0f64, 0.0f64, v_c);
-    let forces = |d: f64, xi: &mut f64, ft: &mut f64, dxi: f64| -> (f64, f64) {
+    let mut vc = v_c;
+    // the history (displacement or force) and the previous step's contact radius
+    let (mut hist, mut a_prev) = (0.0f64, 0.0f64);
+    let mut forces = |d: f64, dxi: f64| -> (f64, f64) {
         if d <= 0.0 {
-            *xi = 0.0;
-            *ft = 0.0;
+            (hist, a_prev) = (0.0, 0.0);
             return (0.0, 0.0);
         }
         let fn_ = kn * d.powf(1.5);
-        let kt = 8.0 * g_eff * (radius * d).sqrt();
+        let a = (radius * d).sqrt();
+        let kt = 8.0 * g_eff * a;
         let lim = mu * fn_;
-        match model {
-            DemTangential::Mindlin => {
-                *xi += dxi;
-                let trial = kt * *xi;
-                if trial.abs() > lim {
-                    *xi = lim.copysign(trial) / kt;
-                }
-                (fn_, kt * *xi)
+        if model.rescales() {
+            if a < a_prev {
+                hist *= a / a_prev;
             }
-            DemTangential::MindlinForce => {
-                *ft += kt * dxi;
-                if ft.abs() > lim {
-                    *ft = lim.copysign(*ft);
-                }
-                (fn_, *ft)
+            a_prev = a;
+        }
+        if model.force_history() {
+            hist += kt * dxi;
+            if hist.abs() > lim {
+                hist = lim.copysign(hist);
             }
+            (fn_, hist)
+        } else {
+            hist += dxi;
+            let trial = kt * hist;
+            if trial.abs() > lim {
+                hist = lim.copysign(trial) / kt;
+            }
+            (fn_, kt * hist)
         }
     };
     let (mut fnn, mut q) = (0.0, 0.0);
@@ -101,7 +141,7 @@ pub fn dem_tangential_cor(
         vc -= 0.5 * dt * lambda * q / mass;
         d += dt * vn;
         let dxi = dt * vc;
-        (fnn, q) = forces(d, &mut xi, &mut ft, dxi);
+        (fnn, q) = forces(d, dxi);
         vn -= 0.5 * dt * fnn / mass;
         vc -= 0.5 * dt * lambda * q / mass;
         t += dt;

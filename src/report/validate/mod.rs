@@ -33,6 +33,7 @@ mod impact;
 mod limits;
 pub mod liquid;
 pub mod oblique;
+pub mod oblique_dem;
 mod prescribed;
 pub mod shapes;
 mod tables;
@@ -310,8 +311,18 @@ pub fn run(opts: &ValidateOptions, tick: &(dyn Fn() + Sync)) -> Result<String> {
     w(&mut md, &oblique::oblique_table()?.markdown());
     w(&mut md, oblique::MBF_TEXT);
     w(&mut md, &oblique::mbf_table()?.markdown());
-    w(&mut md, oblique::DEM_TEXT);
-    w(&mut md, &oblique::dem_table()?.markdown());
+    let dem_rows = oblique_dem::dem_rows()?;
+    w(&mut md, oblique_dem::DEM_TEXT);
+    w(&mut md, &oblique_dem::real_table(&dem_rows)?.markdown());
+    w(&mut md, oblique_dem::SUMMARY_TEXT);
+    w(&mut md, &oblique_dem::summary_table(&dem_rows)?.markdown());
+    w(&mut md, oblique_dem::EMULATION_TEXT);
+    w(&mut md, "<!-- dem-emulation -->\n");
+    w(
+        &mut md,
+        &oblique_dem::emulation_table(&dem_rows)?.markdown(),
+    );
+    w(&mut md, "<!-- /dem-emulation -->\n");
     tick();
 
     // 1h. viscoelastic liquids
