@@ -36,6 +36,11 @@ same step), whose values the generator writes into VALIDATION.md §1g (the block
 `<!-- dem-emulation -->` markers, six decimals), within BOUND in the tangential CoR
 (absolute; observed 1e-12 before the table's rounding).
 
+A viscoelastic scene (scenes/oblique_elastomer.toml) runs instead, on the wall, the normal law
+`mdr-impact dem` fits (`damping viscoelastic`) with `mindlin/force` and `mindlin_rescale/force`,
+`k_t` from the relaxed or the glassy shear modulus, against `mdr`; it prints, writes no CSV and
+checks nothing (the emulation is elastic).
+
 Stdlib only. Usage (from the repository root, after `cargo build --release`):
 
     python3 validation/dem_clients/oblique.py [--bin target/release/mdr-impact]
@@ -89,26 +94,27 @@ def run(cmd, cwd=None):
 
 
 def sphere_of(scene):
-    """The elastic sphere of a scene: mass (kg), radius (m), inertia factor, G (Pa), nu."""
+    """The sphere of a scene: mass (kg), radius (m), inertia factor, relaxed and glassy shear
+    modulus G_inf and G_0 (Pa, equal when elastic), nu. One sphere on a rigid plane (or a rigid
+    sphere on the material's half-space, the same contact)."""
     if "body" in scene:
         body = scene["body"][0]
         mat = body["material"]
-        g, terms = mat["shear"]["g_inf"], mat["shear"].get("terms", [])
-        nu = mat["bulk"]["poisson"]
-        if terms:
-            sys.exit("the sphere must be elastic (no shear terms)")
+        shear = mat["shear"] if "shear" in mat else mat
+        bulk = mat["bulk"] if "bulk" in mat else mat
         other = scene["body"][1]
         if not other.get("rigid", False):
             sys.exit("the second body must be the rigid plane")
     else:
         body = scene["sphere"]
-        mat = scene["material"]
-        g, nu = mat["g_inf"], mat["poisson"]
-        if mat.get("g_1", 0.0) != 0.0:
-            sys.exit("the sphere must be elastic")
+        shear = bulk = mat = scene["material"]
+    if "poisson" not in bulk:
+        sys.exit("the material needs a Poisson ratio (poisson)")
+    g_inf = shear["g_inf"]
+    g_0 = g_inf + shear.get("g_1", 0.0) + sum(t[0] for t in shear.get("terms", []))
     r = body["radius"]
     m = body["mass"] if "mass" in body else body["density"] * 4.0 / 3.0 * math.pi * r**3
-    return m, r, body.get("inertia_factor", 0.4), g, nu
+    return m, r, body.get("inertia_factor", 0.4), g_inf, g_0, bulk["poisson"]
 
 
 def hertz(m, r, e_star, v_n):
@@ -288,6 +294,60 @@ def emulation(path):
     return rows
 
 
+def viscoelastic(args, scene, p, g_0, speed, angles):
+    """A viscoelastic scene: on the wall, the normal law `mdr-impact dem` fits (viscoelastic
+    damping, relaxed modulus) with the two closest tangential models, `k_t` from the relaxed or
+    the glassy shear modulus, against `mdr`. No emulation check (the emulation is elastic)."""
+    v_ns = [speed * math.cos(math.radians(th)) for th in angles]
+    with tempfile.TemporaryDirectory() as tmp:
+        text = run([args.bin, "dem", args.scene, "--v0", f"{0.9 * min(v_ns)}:{1.1 * max(v_ns)}",
+                    "--format", "lammps", "--lammps-version", args.lammps_version,
+                    "--out", tmp])
+        line = next(l for l in text.splitlines()
+                    if l.startswith("fix wall all wall/gran granular hertz/material")
+                    and "damping viscoelastic" in l)
+        young, damp, nu_dem = line.split()[6:9]
+        print(f"normal law from mdr-impact dem: {line}")
+        e_star = float(young) / (2.0 * (1.0 - float(nu_dem)))
+        jobs = [("mindlin/force", p["g"], 1.0, "G_inf"),
+                ("mindlin_rescale/force", p["g"], 1.0, "G_inf"),
+                ("mindlin_rescale/force", p["g"], 0.8, "G_inf"),
+                ("mindlin_rescale/force", g_0, 1.0, "G_0"),
+                ("mindlin_rescale/force", g_0, 0.8, "G_0")]
+        rows = []
+        for th, v_n in zip(angles, v_ns):
+            v_t = speed * math.sin(math.radians(th))
+            o = mdr(args, scene, "wall", v_n, v_t, tempfile.mkdtemp(dir=tmp))
+            dt = hertz(p["m"], p["r"], e_star, v_n)[1] / STEPS
+            for model, g, f, which in jobs:
+                kt = f * 8.0 * g / (2.0 - p["nu"])
+                coeffs = (f"hertz/material {young} {damp} {nu_dem} tangential {model} {kt!r} "
+                          f"0.0 {p['mu']!r} rolling none twisting none damping viscoelastic "
+                          "limit_damping")
+                size = 4 * p["r"]
+                s = ["units si", "atom_style sphere", "atom_modify map array", "boundary p p f",
+                     f"region box block {-size} {size} {-size} {size} -1e-7 {size}",
+                     "create_box 1 box",
+                     f"create_atoms 1 single 0.0 0.0 {p['r'] + GAP_STEPS * v_n * dt!r}",
+                     f"set atom 1 diameter {2 * p['r']!r} density "
+                     f"{p['m'] / (4 / 3 * math.pi * p['r']**3)!r}",
+                     f"velocity all set {v_t!r} 0.0 {-v_n!r}", "comm_modify vel yes",
+                     f"neighbor {p['r'] / 100} bin", f"timestep {dt!r}", "pair_style granular",
+                     f"pair_coeff * * {coeffs}",
+                     f"fix wall all wall/gran granular {coeffs} zplane 0.0 NULL",
+                     "fix integr all nve/sphere"] + trace(1, int(GAP_STEPS + 1.5 * STEPS))
+                et, ang, e = measure(args.lmp, s, tempfile.mkdtemp(dir=tmp), "wall", p["r"],
+                                     v_n, v_t)
+                label = f"{model} k_t x{f:g} from {which}"
+                rows.append((th, label, et, e, o["tangential_cor"], o["cor"]))
+                print(f"{th:5g} {label:38} e_t {et:+.4f} (mdr {o['tangential_cor']:+.4f}, "
+                      f"{et - o['tangential_cor']:+.4f}) e {e:.4f} (mdr {o['cor']:.4f})",
+                      flush=True)
+    for label in dict.fromkeys(r[1] for r in rows):
+        worst = max(abs(r[2] - r[4]) for r in rows if r[1] == label)
+        print(f"{label:38} max |e_t - mdr| {worst:.3f}")
+
+
 def scan(args, scene, p, speed, angles):
     """Per LAMMPS model, the factor on k_t whose largest |tangential CoR - mdr| over the angles
     (wall) is smallest."""
@@ -346,7 +406,7 @@ def main():
             sys.exit(2)
     with open(args.scene, "rb") as f:
         scene = tomllib.load(f)
-    m, r, kappa, g, nu = sphere_of(scene)
+    m, r, kappa, g, g_0, nu = sphere_of(scene)
     mu = scene.get("friction", {}).get("coefficient", 0.0)
     imp = scene.get("impact", {})
     speed = args.speed or math.hypot(imp.get("velocity", 0.0), imp.get("tangential_velocity", 0.0))
@@ -355,6 +415,9 @@ def main():
     p = dict(m=m, r=r, kappa=kappa, g=g, nu=nu, mu=mu)
     e_star = 2.0 * g / (1.0 - nu)
     angles = [float(a) for a in args.angles.split(",")]
+    if g_0 != g:
+        viscoelastic(args, scene, p, g_0, speed, angles)
+        return
     if args.scan:
         scan(args, scene, p, speed, angles)
         return
