@@ -15,9 +15,10 @@ such spheres against each other (one at rest), in
   (force `k_t a xi`, `a = sqrt(R d)`, `1/G_eff = (2 - nu_1)/G_1 + (2 - nu_2)/G_2`: `G/(2 - nu)`
   on a rigid wall, `G/(2(2 - nu))` for two equal spheres). `linear_history` gets the constant
   `k_t = 8 G_eff a_max` (Mindlin's stiffness at the largest contact radius of the normal
-  impact at that angle). Before LAMMPS 28 Mar 2023 a wall mixes its modulus as
-  `E / (2 (1 - nu))`, so the wall's `E` is `2 (1 - nu) E*`; two spheres take the material's
-  `E` and `nu`, whose mixing is exact for equal spheres.
+  impact at that angle). `k_t NULL` is not used: on this version's wall it gave 0.48 times
+  the rigid wall's stiffness for the alumina sphere. Before LAMMPS 28 Mar 2023 a wall mixes
+  its modulus as `E / (2 (1 - nu))`, so the wall's `E` is `2 (1 - nu) E*`; two spheres take
+  the material's `E` and `nu`, whose mixing is exact for equal spheres.
 - LIGGGHTS 3.8.0 `model hertz tangential history` (pair and `fix wall/gran`), no damping
   (restitution 1), both types `E = 2 (1 - nu^2) E*` with the material's `nu` (a rigid wall:
   LIGGGHTS mixes `E*` and `G*` from both types, and this pair gives the wall's `E*` and
@@ -50,10 +51,11 @@ Stdlib only. Usage (from the repository root, after `cargo build --release`):
         [--validation VALIDATION.md]
 
 `--scan MIN:MAX:STEP` runs, instead, each LAMMPS model on the wall with `k_t` times each
-factor and prints the factor closest to `mdr` per model. `--tuned MODEL:FACTOR` adds a run of a LAMMPS model with `k_t` times FACTOR (default: the
-closest found, `mindlin_rescale/force:0.8`). `--csv FILE` writes every run (the file VALIDATION.md §1g is generated from:
-validation/dem_clients/oblique.csv). Exit status 0 when the check holds, 1 otherwise (2 for a
-missing binary).
+factor and prints the factor closest to `mdr` per model. `--tuned MODEL:FACTOR` adds a run of
+a LAMMPS model with `k_t` times FACTOR (default: the closest found,
+`mindlin_rescale/force:0.8`). `--csv FILE` writes every run (the file VALIDATION.md §1g is
+generated from: validation/dem_clients/oblique.csv). Exit status 0 when the check holds, 1
+otherwise (2 for a missing binary).
 """
 
 import argparse
@@ -176,7 +178,7 @@ def atoms(geometry, r, m, v_n, v_t, gap):
 
 
 def lammps_input(geometry, model, p, v_n, v_t, dt, steps, version, kt_scale=1.0):
-    m, r, kappa, g, nu, mu = p["m"], p["r"], p["kappa"], p["g"], p["nu"], p["mu"]
+    m, r, g, nu, mu = p["m"], p["r"], p["g"], p["nu"], p["mu"]
     e_star = 2.0 * g / (1.0 - nu)
     wall = geometry == "wall"
     g_eff = g / (2.0 - nu) if wall else g / (2.0 * (2.0 - nu))
