@@ -32,17 +32,33 @@ fn ssr(r: &FitResult) -> f64 {
     r.residuals.iter().map(|x| x.weighted * x.weighted).sum()
 }
 
-/// Every reported interval of a parameter holds its true value.
+/// Every reported interval of a parameter or group holds its true value; a quantity without
+/// an interval is reported not determined.
 fn intervals_hold_the_truth(r: &FitResult, truth: &[f64; 4]) {
-    for (e, t) in r.parameters.iter().zip(truth) {
+    let [g_inf, g_1, eta, _] = *truth;
+    let groups = [
+        ("p2", g_inf / g_1),
+        ("eta_over_g_inf_3_5", eta / g_inf.powf(0.6)),
+    ];
+    let named = r
+        .parameters
+        .iter()
+        .zip(truth.iter().copied())
+        .chain(groups.iter().filter_map(|(n, t)| {
+            r.groups.iter().find(|e| e.name == *n).map(|e| (e, *t))
+        }));
+    for (e, t) in named {
         if e.fixed {
             continue;
         }
-        let (a, b) = e.ci95.unwrap_or_else(|| panic!("{}: no interval", e.name));
+        let Some((a, b)) = e.ci95 else {
+            assert!(!e.identifiable, "{}: determined without an interval", e.name);
+            continue;
+        };
         // the interval ends are rounded to the printed digits nowhere: a closed check, with a
         // relative slack of 1e-9 for an end that lands on a grid level of nu
         assert!(
-            a <= t + 1e-9 * t.abs() && *t <= b + 1e-9 * t.abs(),
+            a <= t + 1e-9 * t.abs() && t <= b + 1e-9 * t.abs(),
             "{}: truth {t} outside [{a}, {b}]",
             e.name
         );
@@ -108,9 +124,15 @@ fn intervals_hold_a_truth_within_the_threshold() {
         "{} > {truth_ssr}",
         ssr(&r)
     );
-    // the truth lies within chi^2 = 3.84 of the estimate: every interval must hold it
+    // the truth lies within chi^2 = 3.84 of the estimate: every interval must hold it (nu may
+    // be reported not determined: its profile stays within the threshold towards the
+    // incompressible limit), and the CoR groups are determined
     assert!(truth_ssr - ssr(&r) < 3.84);
     intervals_hold_the_truth(&r, &truth);
+    for name in ["p2", "eta_over_g_inf_3_5"] {
+        let g = r.groups.iter().find(|e| e.name == name).unwrap();
+        assert!(g.identifiable, "{name}: {}", g.note);
+    }
 }
 
 /// Six drops at one velocity (a CoR and a contact time each) hold two numbers: with
@@ -332,4 +354,21 @@ fn box_set_144_finds_the_basin_of_the_truth() {
 #[test]
 fn box_set_42_finds_the_basin_near_half() {
     box_set_keeps_its_promises(42);
+}
+
+/// Set 22 (`nu` free, CoR only, 5 % noise): the estimate lies in the Kelvin corner
+/// (`g_1 -> inf`, `nu` = 0.39) and another basin near `nu` = 0 fits about as well; an earlier fit
+/// widened the interval of `eta / g_inf^(3/5)` to a point of that basin but stopped there,
+/// excluding the truth 0.298 (misfit 0.6 above the estimate's) at 0.294.
+#[test]
+fn box_set_22_interval_follows_the_profile_past_another_basin() {
+    box_set_keeps_its_promises(22);
+}
+
+/// Set 125 (`nu` fixed near 0.5, contact times, 5 % noise): an earlier fit placed the lower
+/// end of `g_1` at 5.66e9 by interpolating a curved profile linearly, excluding the truth
+/// 5.55e9 (misfit 1.75 above the estimate's).
+#[test]
+fn box_set_125_crossing_is_bracketed() {
+    box_set_keeps_its_promises(125);
 }

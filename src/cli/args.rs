@@ -423,6 +423,14 @@ pub struct FitStudyArgs {
     /// Data sets of the study across the box.
     #[arg(long, default_value_t = 320, requires = "across_box")]
     pub sets: usize,
+    /// Only these sets of the box study (comma-separated indices below --sets; each set's
+    /// truth and noise depend only on the seed and its index).
+    #[arg(long, value_delimiter = ',', requires = "across_box", conflicts_with = "report")]
+    pub only: Vec<u64>,
+    /// Per-set outcomes of the box study as CSV (truth, estimate, 95 % interval and status of
+    /// every quantity, misfits at the estimate and the truth).
+    #[arg(long, requires = "across_box")]
+    pub csv: Option<PathBuf>,
     /// Report whose fit section (or, with `--box`, fit-box section) is replaced.
     #[arg(long)]
     pub report: Option<PathBuf>,

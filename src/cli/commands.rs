@@ -476,9 +476,18 @@ fn cmd_fit_study(a: FitStudyArgs) -> Outcome {
         if let Some(p) = report {
             sections::require_section(p, &sections::FIT_BOX)?;
         }
-        let r = with_progress(cfg.sets as u64, "fit-study --box", |tick| {
-            fit::study_box::run(&cfg, tick)
+        let sets: Vec<u64> = if a.only.is_empty() {
+            (0..cfg.sets as u64).collect()
+        } else {
+            a.only.clone()
+        };
+        let r = with_progress(sets.len() as u64, "fit-study --box", |tick| {
+            fit::study_box::run_sets(&cfg, &sets, tick)
         })?;
+        if let Some(p) = &a.csv {
+            fit::study_box::write_csv(&r, p)?;
+            eprintln!("per-set outcomes written to {}", p.display());
+        }
         let section = fit::study_box::markdown(&r);
         print!("{section}");
         if let Some(p) = report {

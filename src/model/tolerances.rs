@@ -75,6 +75,10 @@ pub const FIT_PROFILE_OTHERS: usize = 2;
 /// `fit`: those minima are taken only when their misfit is at most this factor times the
 /// estimate's (at least 1).
 pub const FIT_PROFILE_OTHERS_SSR: f64 = 3.0;
+/// `fit`: points screened or evaluated by the fit (smallest misfit first) that also start each
+/// of those profile minimisations, taken among the points whose quantity lies at or beyond the
+/// profile point (a basin on the far side of the interval's end).
+pub const FIT_PROFILE_BEYOND: usize = 2;
 
 /// Absolute accuracy floor of the tangential CoR of an oblique `mdr` run: the adaptive driver
 /// accepts `v_c' / v_c` at `max(rtol, OBLIQUE_TANGENTIAL_ATOL)` (absolute; the normal CoR keeps

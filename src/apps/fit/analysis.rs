@@ -212,6 +212,7 @@ pub(super) fn analyse(
         let threshold = q * q * s * s;
         // the ends of every Wald interval against the profile misfit (profile.rs)
         let starts = profile_starts(ctx, &coords, best_ssr, others, moving);
+        let pool = profile_pool(ctx, best_ssr, threshold);
         let check = |e: &mut Estimate, a: &[f64], x: f64, back: &dyn Fn(f64) -> f64| {
             let (Some(se), Some(_), true, false) = (e.se, e.ci95, e.identifiable, e.fixed) else {
                 return;
@@ -226,6 +227,7 @@ pub(super) fn analyse(
                     threshold,
                     moving,
                     &starts,
+                    &pool,
                 )
             };
             let offset = |end: End| match end {
@@ -296,40 +298,143 @@ pub(super) fn analyse(
                 }
             }
         }
-        // another point met by the fit (a minimum of another start, or of a nu level with nu
-        // held) whose misfit is within the likelihood-ratio threshold: the profile of every
-        // parameter lies at or below it there, so every interval is widened to contain it (and
-        // judged again by its reach)
-        for (other_ssr, other) in others.iter().filter(|o| o.0 - best_ssr <= threshold) {
-            let note = format!(
-                "interval widened to another point within the 95 % threshold of the misfit (SSR \
-                 {other_ssr:.4e} against {best_ssr:.4e})"
-            );
-            let widen = |e: &mut Estimate, v: f64, to_coord: &dyn Fn(f64) -> f64| {
-                let (Some((lo, hi)), Some(x), false) = (e.ci95, e.value, e.fixed) else {
-                    return;
-                };
-                if lo <= v && v <= hi {
-                    return;
-                }
-                let (lo, hi) = (lo.min(v), hi.max(v));
-                e.ci95 = Some((lo, hi));
-                e.note.clone_from(&note);
-                let reach = (to_coord(lo) - to_coord(x))
-                    .abs()
-                    .max((to_coord(hi) - to_coord(x)).abs());
-                if !(reach <= FIT_MAX_HALF_WIDTH) {
-                    e.identifiable = false;
-                    e.note
-                        .push_str(", which spans more than a factor 10 either way");
-                }
+        // Another point met by the fit (a minimum of another start or of a nu level with nu
+        // held, or any point evaluated on the way: a step of a minimisation, a Jacobian, a
+        // profile) whose misfit is within the likelihood-ratio threshold: the profile of every
+        // parameter and group lies at or below it there, so every interval is widened to
+        // contain it (and judged again by its reach).
+        let mut within: Vec<(f64, Vec<f64>)> = others
+            .iter()
+            .filter(|o| o.0 - best_ssr <= threshold)
+            .cloned()
+            .collect();
+        within.extend(
+            ctx.visited
+                .borrow()
+                .iter()
+                .filter(|o| o.0 - best_ssr <= threshold)
+                .cloned(),
+        );
+        // The profile goes on beyond such a point (it lies in another basin, which the checks
+        // of the Wald ends did not reach): each end moved to a point is followed outward along
+        // the profile from there like a Wald end ([`Ctx::check_end`]).
+        let widen = |e: &mut Estimate,
+                     a: &[f64],
+                     x: f64,
+                     points: &[(f64, f64, usize)],
+                     to_coord: &dyn Fn(f64) -> f64,
+                     back: &dyn Fn(f64) -> f64| {
+            let (Some((lo, hi)), Some(_), false) = (e.ci95, e.value, e.fixed) else {
+                return;
             };
-            for ((e, v), p) in parameters.iter_mut().zip(other).zip(&model.params) {
-                widen(e, *v, &|x| p.kind.to_coord(x));
+            let Some(&p_lo) = points.iter().min_by(|a, b| a.0.total_cmp(&b.0)) else {
+                return;
+            };
+            let Some(&p_hi) = points.iter().max_by(|a, b| a.0.total_cmp(&b.0)) else {
+                return;
+            };
+            if lo <= p_lo.0 && p_hi.0 <= hi {
+                return;
             }
-            for (e, g) in groups.iter_mut().zip(model.groups(other)) {
-                widen(e, g.1, &f64::ln);
+            let mut ends = [to_coord(lo), to_coord(hi)];
+            let mut open = false;
+            let mut other_ssr = f64::NEG_INFINITY;
+            for (k, (p, outside)) in [(p_lo, p_lo.0 < lo), (p_hi, p_hi.0 > hi)]
+                .into_iter()
+                .enumerate()
+            {
+                if !outside {
+                    continue;
+                }
+                other_ssr = other_ssr.max(p.1);
+                let c = to_coord(p.0);
+                let (sign, h) = ((c - x).signum(), (c - x).abs());
+                if !e.identifiable || h == 0.0 {
+                    ends[k] = c;
+                    continue;
+                }
+                let at = ctx.coords(&within[p.2].1);
+                match ctx.check_end(
+                    a,
+                    (x, h, sign),
+                    &at,
+                    best_ssr,
+                    threshold,
+                    moving,
+                    &starts,
+                    &pool,
+                ) {
+                    End::Kept => ends[k] = c,
+                    End::Moved(o) => ends[k] = x + sign * o,
+                    End::Open => open = true,
+                }
             }
+            if open {
+                e.ci95 = None;
+                e.identifiable = false;
+                e.note = format!(
+                    "not determined: another point lies within the 95 % threshold of the misfit \
+                     (SSR {other_ssr:.4e} against {best_ssr:.4e}) and the profile beyond it \
+                     stays within the threshold past a factor 10 (in the coordinate)"
+                );
+                return;
+            }
+            let (u, v) = (back(ends[0]), back(ends[1]));
+            let (lo, hi) = (u.min(v).min(lo), u.max(v).max(hi));
+            e.ci95 = Some((lo, hi));
+            e.note = format!(
+                "interval widened to another point within the 95 % threshold of the misfit (SSR \
+                 {other_ssr:.4e} against {best_ssr:.4e}) and along the profile beyond it"
+            );
+            let reach = (to_coord(lo) - x).abs().max((to_coord(hi) - x).abs());
+            if !(reach <= FIT_MAX_HALF_WIDTH) {
+                e.identifiable = false;
+                e.note
+                    .push_str(", which spans more than a factor 10 either way");
+            }
+        };
+        for (i, (e, p)) in parameters.iter_mut().zip(&model.params).enumerate() {
+            if fixed[i].is_some() {
+                continue;
+            }
+            let points: Vec<(f64, f64, usize)> = within
+                .iter()
+                .enumerate()
+                .map(|(k, (s, v))| (v[i], *s, k))
+                .collect();
+            let mut a = vec![0.0; np];
+            a[i] = 1.0;
+            let kind = p.kind;
+            widen(
+                e,
+                &a,
+                coords[i],
+                &points,
+                &|x| kind.to_coord(x),
+                &|c| kind.from_coord(c),
+            );
+        }
+        let group_values: Vec<Vec<f64>> = within
+            .iter()
+            .map(|(_, v)| model.groups(v).into_iter().map(|(_, g, _)| g).collect())
+            .collect();
+        for (k, (e, (_, value, mut grad))) in groups
+            .iter_mut()
+            .zip(model.groups(&values))
+            .enumerate()
+        {
+            for (g, f) in grad.iter_mut().zip(fixed) {
+                if f.is_some() {
+                    *g = 0.0;
+                }
+            }
+            let points: Vec<(f64, f64, usize)> = within
+                .iter()
+                .zip(&group_values)
+                .enumerate()
+                .map(|(j, ((s, _), g))| (g[k], *s, j))
+                .collect();
+            widen(e, &grad, value.ln(), &points, &f64::ln, &f64::exp);
         }
     }
     let verdict = verdict(&parameters, &groups);
@@ -380,6 +485,23 @@ fn profile_starts(
         })
         .take(FIT_PROFILE_OTHERS)
         .collect()
+}
+
+/// The points screened or evaluated by the fit whose misfit lies within four thresholds of the
+/// best (coordinates, best first): starts of the profile minimisations on the far side of an
+/// interval's end ([`Ctx::check_end`]). Screened misfits come from loose solves; they only
+/// rank the starts.
+fn profile_pool(ctx: &Ctx, best_ssr: f64, threshold: f64) -> Vec<(f64, Vec<f64>)> {
+    let mut pool: Vec<(f64, Vec<f64>)> = ctx
+        .screened
+        .borrow()
+        .iter()
+        .chain(ctx.visited.borrow().iter())
+        .filter(|(s, _)| *s <= best_ssr + 4.0 * threshold)
+        .map(|(s, v)| (*s, ctx.coords(v)))
+        .collect();
+    pool.sort_by(|a, b| a.0.total_cmp(&b.0));
+    pool
 }
 
 /// One line: which parameters and groups the data determine.

@@ -83,7 +83,7 @@ use crate::error::{Error, Result};
 use crate::model::impact::Impact;
 use crate::model::tolerances::{
     FIT_FD_STEP, FIT_LM_PATIENCE, FIT_LM_STARTS, FIT_LM_TOL, FIT_MAX_HALF_WIDTH,
-    FIT_NULL_COMPONENT, FIT_NULL_RATIO, FIT_PROFILE_OTHERS, FIT_PROFILE_OTHERS_SSR,
+    FIT_NULL_COMPONENT, FIT_NULL_RATIO, FIT_PROFILE_BEYOND, FIT_PROFILE_OTHERS, FIT_PROFILE_OTHERS_SSR,
     FIT_PROFILE_STEP, FIT_PROFILE_STEPS, FIT_RTOL, FIT_SCREEN_RTOL,
 };
 use crate::solvers::{solve, SolveOptions, SolverKind};
@@ -254,6 +254,12 @@ struct Ctx<'a> {
     /// rtol of the forward solves inside Levenberg–Marquardt ([`FIT_RTOL`]; looser while
     /// scouting, [`Ctx::scout`]).
     lm_rtol: Cell<f64>,
+    /// Every point whose misfit was evaluated at [`FIT_RTOL`] (by a minimisation, a Jacobian or
+    /// a profile), with that misfit: the points met within the 95 % threshold of the best one
+    /// must lie inside every interval ([`analysis`]).
+    visited: RefCell<Vec<(f64, Vec<f64>)>>,
+    /// The starting points screened at a loose rtol, with their misfit (parameter values).
+    screened: RefCell<Vec<(f64, Vec<f64>)>>,
 }
 
 impl<'a> Ctx<'a> {
@@ -265,6 +271,8 @@ impl<'a> Ctx<'a> {
             p3_scale: p3_scale(data),
             fixed: fixed.to_vec(),
             lm_rtol: Cell::new(FIT_RTOL),
+            visited: RefCell::new(Vec::new()),
+            screened: RefCell::new(Vec::new()),
         }
     }
 
@@ -298,11 +306,16 @@ impl<'a> Ctx<'a> {
     }
 
     fn residuals(&self, values: &[f64], rtol: f64) -> Result<Vec<f64>> {
-        Ok(self
+        let r: Vec<f64> = self
             .residual_list(values, rtol)?
             .into_iter()
             .map(|r| r.weighted)
-            .collect())
+            .collect();
+        let s = ssr(&r);
+        if rtol == FIT_RTOL && s.is_finite() {
+            self.visited.borrow_mut().push((s, values.to_vec()));
+        }
+        Ok(r)
     }
 
     fn residual_list(&self, values: &[f64], rtol: f64) -> Result<Vec<Residual>> {
@@ -595,6 +608,7 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
         })
         .collect();
     screened.sort_by(|a, b| a.0.total_cmp(&b.0));
+    ctx.screened.borrow_mut().clone_from(&screened);
     // The misfit can have several basins, mostly along nu. With nu free, the best screened
     // points of every nu level are first minimised with nu held at the level (the profile of
     // the misfit along nu at the grid levels), and the full fit starts from the best levels.

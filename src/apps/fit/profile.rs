@@ -7,7 +7,7 @@
 //! the end is moved outward by stepping along the profile until it crosses, or the quantity is
 //! reported not determined when it does not cross within a factor 10.
 
-use super::{Ctx, FIT_MAX_HALF_WIDTH};
+use super::{Ctx, FIT_MAX_HALF_WIDTH, FIT_PROFILE_BEYOND};
 
 /// A linear constraint `a . c = target` on the coordinates `c`, kept by solving it for the
 /// coordinate `pivot` (whose coefficient is not zero).
@@ -49,6 +49,32 @@ pub(super) enum End {
 /// Ratio of the offset of the point checked beyond a Wald end to the Wald half-width.
 const BEYOND: f64 = 1.5;
 
+/// Bisections of the bracket in which the profile crosses the threshold.
+const CROSSING_BISECTIONS: usize = 3;
+
+/// The starts of a profile minimisation at `a . c = target`: `others`, then the first
+/// [`FIT_PROFILE_BEYOND`] points of `pool` whose `a . c` lies at or beyond `target` on the
+/// side `sign`.
+fn others_and_pool(
+    others: &[Vec<f64>],
+    pool: &[(f64, Vec<f64>)],
+    a: &[f64],
+    target: f64,
+    sign: f64,
+) -> Vec<Vec<f64>> {
+    let mut starts = others.to_vec();
+    starts.extend(
+        pool.iter()
+            .filter(|(_, c)| {
+                let ac: f64 = a.iter().zip(c).map(|(ai, ci)| ai * ci).sum();
+                sign * (ac - target) >= 0.0
+            })
+            .take(FIT_PROFILE_BEYOND)
+            .map(|(_, c)| c.clone()),
+    );
+    starts
+}
+
 impl Ctx<'_> {
     /// The profile misfit at `a . c = t`: the smallest misfit over the other coordinates of
     /// `moving`, re-minimised from each of `starts` (coordinates; the constraint is applied
@@ -86,9 +112,12 @@ impl Ctx<'_> {
     /// Check the end `x + sign h` of the Wald interval of `a . c` (estimate `x` at the
     /// coordinates `at`, misfit `best_ssr`) against the level `best_ssr + threshold`: the
     /// profile at the end and at `x + sign 1.5 h`, each re-minimised from the previous profile
-    /// point and from `others` (coordinates of other minima met by the fit). Where either lies
+    /// point, from `others` (coordinates of other minima met by the fit) and from the
+    /// [`FIT_PROFILE_BEYOND`] points of `pool` (coordinates with their misfit, best first: the
+    /// points the fit screened or evaluated) of smallest misfit whose `a . c` lies at or beyond
+    /// the profile point, so that a basin on the far side is reached. Where either lies
     /// below the level, the profile is followed outward in growing steps until it crosses
-    /// (the crossing interpolated linearly) or reaches [`FIT_MAX_HALF_WIDTH`].
+    /// (the crossing bracketed by bisection, [`Ctx::bisect_crossing`]) or reaches [`FIT_MAX_HALF_WIDTH`].
     #[allow(clippy::too_many_arguments)]
     pub(super) fn check_end(
         &self,
@@ -99,23 +128,30 @@ impl Ctx<'_> {
         threshold: f64,
         moving: &[usize],
         others: &[Vec<f64>],
+        pool: &[(f64, Vec<f64>)],
     ) -> End {
         let level = best_ssr + threshold;
         let mut warm = at.to_vec();
-        let (mut prev_off, mut prev_ssr) = (0.0, best_ssr);
+        let mut prev_off = 0.0;
         let mut off = h;
         let mut step = h * (BEYOND - 1.0);
         let mut below_seen = false;
         loop {
             let mut starts = vec![warm.clone()];
-            starts.extend(others.iter().cloned());
+            starts.extend(others_and_pool(others, pool, a, x + sign * off, sign));
             let Some((s, c)) = self.profile_at(a, x + sign * off, moving, &starts) else {
                 return End::Open;
             };
             if s >= level {
                 if below_seen {
-                    let f = ((level - prev_ssr) / (s - prev_ssr)).clamp(0.0, 1.0);
-                    return End::Moved(prev_off + f * (off - prev_off));
+                    return End::Moved(self.bisect_crossing(
+                        a,
+                        (x, sign),
+                        (prev_off, off),
+                        level,
+                        moving,
+                        (&warm, &others_and_pool(others, pool, a, x + sign * prev_off, sign)),
+                    ));
                 }
                 if off >= BEYOND * h {
                     return End::Kept;
@@ -127,11 +163,44 @@ impl Ctx<'_> {
                 }
             }
             warm = c;
-            (prev_off, prev_ssr) = (off, s);
+            prev_off = off;
             off = (off + step).min(FIT_MAX_HALF_WIDTH.max(BEYOND * h));
             if below_seen {
                 step *= 2.0;
             }
         }
+    }
+
+    /// The offset at which the profile of `a . c` crosses `level` between `lo` (below it) and
+    /// `hi` (at or above it) from the estimate `x` on the side `sign`: [`CROSSING_BISECTIONS`]
+    /// bisections, each profile point re-minimised from the last point below the level and
+    /// from `starts`; the outer end of the last bracket (where the profile was seen at or
+    /// above the level), so that no value below the level is left out by the linear
+    /// interpolation of a curved profile.
+    fn bisect_crossing(
+        &self,
+        a: &[f64],
+        (x, sign): (f64, f64),
+        (mut lo, mut hi): (f64, f64),
+        level: f64,
+        moving: &[usize],
+        (warm, starts): (&[f64], &[Vec<f64>]),
+    ) -> f64 {
+        let mut warm = warm.to_vec();
+        for _ in 0..CROSSING_BISECTIONS {
+            let mid = 0.5 * (lo + hi);
+            let mut from = vec![warm.clone()];
+            from.extend(starts.iter().cloned());
+            match self.profile_at(a, x + sign * mid, moving, &from) {
+                Some((s, c)) if s < level => {
+                    lo = mid;
+                    warm = c;
+                }
+                Some(_) => hi = mid,
+                // a failed re-minimisation proves nothing: keep the verified outer end
+                None => lo = mid,
+            }
+        }
+        hi
     }
 }

@@ -116,6 +116,8 @@ pub struct SetOutcome {
     pub ssr: (f64, f64),
     /// Per quantity (in [`QUANTITIES`] order; `None` when fixed).
     pub status: Vec<Option<Status>>,
+    /// Per quantity: the reported estimate and 95 % interval (SI; `None` when not given).
+    pub reported: Vec<(Option<f64>, Option<(f64, f64)>)>,
 }
 
 /// The quantities checked: the parameters and the CoR-determined groups.
@@ -202,6 +204,10 @@ pub fn set_outcome(cfg: &BoxConfig, k: u64) -> Result<SetOutcome> {
     let r = fit(&model, &data, &fixed)?;
     let ssr_fit: f64 = r.residuals.iter().map(|x| x.weighted * x.weighted).sum();
     let ssr_truth = misfit(&model, &data, &truth)?;
+    let reported = QUANTITIES
+        .iter()
+        .map(|&name| r.get(name).map_or((None, None), |e| (e.value, e.ci95)))
+        .collect();
     let status = QUANTITIES
         .iter()
         .map(|&name| {
@@ -234,6 +240,7 @@ pub fn set_outcome(cfg: &BoxConfig, k: u64) -> Result<SetOutcome> {
         truth,
         ssr: (ssr_fit, ssr_truth),
         status,
+        reported,
     })
 }
 
@@ -251,9 +258,23 @@ pub struct BoxReport {
 /// Run the study (sets in parallel); `tick` after each set.
 pub fn run(cfg: &BoxConfig, tick: &(dyn Fn() + Sync)) -> Result<BoxReport> {
     cfg.check()?;
-    let results: Vec<(u64, Result<SetOutcome>)> = (0..cfg.sets as u64)
-        .into_par_iter()
-        .map(|k| {
+    let all: Vec<u64> = (0..cfg.sets as u64).collect();
+    run_sets(cfg, &all, tick)
+}
+
+/// Run the sets `sets` of the study (each reproducible on its own: its truth and noise depend
+/// only on the seed and its index); `tick` after each set.
+///
+/// # Errors
+/// [`crate::Error::OutOfRange`] naming `only` when a set is not below `cfg.sets`.
+pub fn run_sets(cfg: &BoxConfig, sets: &[u64], tick: &(dyn Fn() + Sync)) -> Result<BoxReport> {
+    cfg.check()?;
+    for &k in sets {
+        crate::error::check("only", k as f64, k < cfg.sets as u64, "0 <= set < sets")?;
+    }
+    let results: Vec<(u64, Result<SetOutcome>)> = sets
+        .par_iter()
+        .map(|&k| {
             let r = set_outcome(cfg, k);
             tick();
             (k, r)
@@ -272,6 +293,63 @@ pub fn run(cfg: &BoxConfig, tick: &(dyn Fn() + Sync)) -> Result<BoxReport> {
         outcomes,
         failures,
     })
+}
+
+/// One row per set and quantity (`fit-study --box --csv`): `set, nu_free, contact_times,
+/// noise, near_half, quantity, truth, estimate, ci_low, ci_high, status, ssr_fit, ssr_truth`
+/// (SI; `status` is `determined`, `conditional`, `not_determined` or `fixed`; empty fields
+/// where `fit` gave no value).
+///
+/// # Errors
+/// [`crate::Error::Io`] when the file cannot be written.
+pub fn write_csv(r: &BoxReport, path: &std::path::Path) -> Result<()> {
+    let io = |e: ::csv::Error| crate::Error::io(path, e);
+    let mut w = ::csv::Writer::from_path(path).map_err(io)?;
+    w.write_record([
+        "set",
+        "nu_free",
+        "contact_times",
+        "noise",
+        "near_half",
+        "quantity",
+        "truth",
+        "estimate",
+        "ci_low",
+        "ci_high",
+        "status",
+        "ssr_fit",
+        "ssr_truth",
+    ])
+    .map_err(io)?;
+    let opt = |x: Option<f64>| x.map_or(String::new(), |v| format!("{v:e}"));
+    for o in &r.outcomes {
+        for (q, name) in QUANTITIES.iter().enumerate() {
+            let (value, ci) = o.reported.get(q).copied().unwrap_or((None, None));
+            let status = match o.status.get(q).copied().flatten() {
+                Some(Status::Determined(_)) => "determined",
+                Some(Status::Conditional(_)) => "conditional",
+                Some(Status::NotDetermined) => "not_determined",
+                None => "fixed",
+            };
+            w.write_record([
+                o.set.to_string(),
+                o.cell.nu_free.to_string(),
+                o.cell.contact_times.to_string(),
+                o.cell.noise.to_string(),
+                o.cell.near_half.to_string(),
+                (*name).to_string(),
+                format!("{:e}", truth_of(name, &o.truth)),
+                opt(value),
+                opt(ci.map(|c| c.0)),
+                opt(ci.map(|c| c.1)),
+                status.to_string(),
+                format!("{:e}", o.ssr.0),
+                format!("{:e}", o.ssr.1),
+            ])
+            .map_err(io)?;
+        }
+    }
+    w.flush().map_err(|e| crate::Error::io(path, e))
 }
 
 /// The excess `ssr_fit - ssr_truth` of a set, relative to `max(1, ssr_truth)`.
