@@ -40,19 +40,21 @@ fn intervals_hold_the_truth(r: &FitResult, truth: &[f64; 4]) {
         ("p2", g_inf / g_1),
         ("eta_over_g_inf_3_5", eta / g_inf.powf(0.6)),
     ];
-    let named = r
-        .parameters
-        .iter()
-        .zip(truth.iter().copied())
-        .chain(groups.iter().filter_map(|(n, t)| {
-            r.groups.iter().find(|e| e.name == *n).map(|e| (e, *t))
-        }));
+    let named = r.parameters.iter().zip(truth.iter().copied()).chain(
+        groups
+            .iter()
+            .filter_map(|(n, t)| r.groups.iter().find(|e| e.name == *n).map(|e| (e, *t))),
+    );
     for (e, t) in named {
         if e.fixed {
             continue;
         }
         let Some((a, b)) = e.ci95 else {
-            assert!(!e.identifiable, "{}: determined without an interval", e.name);
+            assert!(
+                !e.identifiable,
+                "{}: determined without an interval",
+                e.name
+            );
             continue;
         };
         // the interval ends are rounded to the printed digits nowhere: a closed check, with a

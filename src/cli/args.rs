@@ -425,7 +425,12 @@ pub struct FitStudyArgs {
     pub sets: usize,
     /// Only these sets of the box study (comma-separated indices below --sets; each set's
     /// truth and noise depend only on the seed and its index).
-    #[arg(long, value_delimiter = ',', requires = "across_box", conflicts_with = "report")]
+    #[arg(
+        long,
+        value_delimiter = ',',
+        requires = "across_box",
+        conflicts_with = "report"
+    )]
     pub only: Vec<u64>,
     /// Per-set outcomes of the box study as CSV (truth, estimate, 95 % interval and status of
     /// every quantity, misfits at the estimate and the truth).

@@ -405,23 +405,16 @@ pub(super) fn analyse(
             let mut a = vec![0.0; np];
             a[i] = 1.0;
             let kind = p.kind;
-            widen(
-                e,
-                &a,
-                coords[i],
-                &points,
-                &|x| kind.to_coord(x),
-                &|c| kind.from_coord(c),
-            );
+            widen(e, &a, coords[i], &points, &|x| kind.to_coord(x), &|c| {
+                kind.from_coord(c)
+            });
         }
         let group_values: Vec<Vec<f64>> = within
             .iter()
             .map(|(_, v)| model.groups(v).into_iter().map(|(_, g, _)| g).collect())
             .collect();
-        for (k, (e, (_, value, mut grad))) in groups
-            .iter_mut()
-            .zip(model.groups(&values))
-            .enumerate()
+        for (k, (e, (_, value, mut grad))) in
+            groups.iter_mut().zip(model.groups(&values)).enumerate()
         {
             for (g, f) in grad.iter_mut().zip(fixed) {
                 if f.is_some() {

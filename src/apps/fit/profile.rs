@@ -150,7 +150,10 @@ impl Ctx<'_> {
                         (prev_off, off),
                         level,
                         moving,
-                        (&warm, &others_and_pool(others, pool, a, x + sign * prev_off, sign)),
+                        (
+                            &warm,
+                            &others_and_pool(others, pool, a, x + sign * prev_off, sign),
+                        ),
                     ));
                 }
                 if off >= BEYOND * h {

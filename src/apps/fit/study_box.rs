@@ -103,6 +103,9 @@ pub enum Status {
     NotDetermined,
 }
 
+/// A reported estimate and its 95 % interval (SI; `None` when not given).
+pub type Reported = (Option<f64>, Option<(f64, f64)>);
+
 /// One set's outcome.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SetOutcome {
@@ -117,7 +120,7 @@ pub struct SetOutcome {
     /// Per quantity (in [`QUANTITIES`] order; `None` when fixed).
     pub status: Vec<Option<Status>>,
     /// Per quantity: the reported estimate and 95 % interval (SI; `None` when not given).
-    pub reported: Vec<(Option<f64>, Option<(f64, f64)>)>,
+    pub reported: Vec<Reported>,
 }
 
 /// The quantities checked: the parameters and the CoR-determined groups.
@@ -581,6 +584,46 @@ pub fn markdown(r: &BoxReport) -> String {
         }
         s.push('\n');
     }
+    // the intervals' promise: no truth within the threshold of the misfit is left out (every
+    // set gives its standard deviations: the threshold is the normal quantile squared)
+    let threshold = super::analysis::normal_quantile().powi(2);
+    let misses: Vec<(u64, &str, f64)> = r
+        .outcomes
+        .iter()
+        .flat_map(|o| {
+            o.status
+                .iter()
+                .zip(QUANTITIES)
+                .filter(|(st, _)| matches!(st, Some(Status::Determined(false))))
+                .map(move |(_, name)| (o.set, name, o.ssr.1 - o.ssr.0))
+        })
+        .collect();
+    let broken: Vec<String> = misses
+        .iter()
+        .filter(|m| m.2 < threshold)
+        .map(|(k, name, d)| format!("set {k} {name} ({d:.2})"))
+        .collect();
+    s.push_str(&format!(
+        "\nOf the {} determined intervals that leave out the truth, {} do so although the truth's \
+         misfit lies within the 95 % threshold of the estimate's (`SSR_truth - SSR_fit < {:.2}`, \
+         where the profile at the truth's value is lower still, so the promise of the interval \
+         is broken){}; in the others the truth lies beyond the threshold (smallest \
+         `SSR_truth - SSR_fit`: {:.2}), so that each may be one of the 5 % of misses a 95 % \
+         interval allows.\n",
+        misses.len(),
+        broken.len(),
+        threshold,
+        if broken.is_empty() {
+            String::new()
+        } else {
+            format!(": {}", broken.join(", "))
+        },
+        misses
+            .iter()
+            .map(|m| m.2)
+            .filter(|d| *d >= threshold)
+            .fold(f64::INFINITY, f64::min)
+    ));
     s.push_str(&format!("\nFailed sets: {}", r.failures.len()));
     for (k, e) in r.failures.iter().take(5) {
         s.push_str(&format!("; set {k}: {e}"));
