@@ -337,6 +337,8 @@ struct Solver<const K: usize> {
     last_seg: usize,
     /// Time and value of the largest node force of the last solve, when it lies in compression.
     peak_node: Option<(f64, f64)>,
+    /// Locate the maximum force on the dense output after the solve ([`driver`]'s `finish`).
+    refine_peak: bool,
     /// The shape's values at the indentation of the last dense compression output (a shape
     /// other than the paraboloid: the Ting root that asked for it uses `a` and `a'` there too).
     last_point: ShapePoint,
@@ -419,6 +421,23 @@ pub fn impact_on(
     rtol: f64,
     history: bool,
 ) -> Result<Outcome> {
+    impact_with(geometry, prony, rtol, history, true)
+}
+
+/// [`impact_on`]; with `peak_force` false the maximum force is not located to `rtol` after
+/// the solve ([`SolveOptions::peak_force`]: the largest sampled force with its parabola).
+pub fn impact_with(
+    geometry: Option<Geometry>,
+    prony: &Prony,
+    rtol: f64,
+    history: bool,
+    peak_force: bool,
+) -> Result<Outcome> {
+    let mode = if peak_force {
+        Mode::Verified
+    } else {
+        Mode::VerifiedNoPeak
+    };
     let geom = geometry.filter(|g| *g != Geometry::UNIT_SPHERE);
     let (c_inf, live) = prepare(prony, rtol)?;
     if geom.is_some_and(|g| g.is_flat()) {
@@ -437,10 +456,10 @@ pub fn impact_on(
     // of the merge stays within a share of rtol (module `reduce`)
     if live.len() > 2 {
         return reduce::solve(c_inf, &live, rtol, |c, l, r| {
-            dispatch(geom, c, l, r, history, Mode::Verified)
+            dispatch(geom, c, l, r, history, mode)
         });
     }
-    dispatch(geom, c_inf, &live, rtol, history, Mode::Verified)
+    dispatch(geom, c_inf, &live, rtol, history, mode)
 }
 
 /// [`impact`] without merging the terms outside the contact window (module `reduce`): every
@@ -466,6 +485,8 @@ pub fn impact_unverified(prony: &Prony, rtol: f64, history: bool) -> Result<Outc
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Mode {
     Verified,
+    /// [`Mode::Verified`] without locating the maximum force after the solve.
+    VerifiedNoPeak,
     Unverified,
 }
 
@@ -600,10 +621,11 @@ fn solve_terms<const K: usize>(
         evaluations: 0,
         last_seg: 0,
         peak_node: None,
+        refine_peak: mode != Mode::VerifiedNoPeak,
         last_point: ShapePoint::default(),
     };
     match mode {
-        Mode::Verified => verified(&mut s, rtol, history),
+        Mode::Verified | Mode::VerifiedNoPeak => verified(&mut s, rtol, history),
         Mode::Unverified => unverified(&mut s, rtol, history),
     }
 }
@@ -689,11 +711,12 @@ impl ImpactSolver for Fast {
         SolverKind::Fast
     }
     fn solve(&self, contact: &Contact, opts: &SolveOptions) -> Result<CanonicalOutcome> {
-        impact_on(
+        impact_with(
             Some(contact.geometry),
             &contact.g_eq,
             opts.rtol,
             opts.history,
+            opts.peak_force,
         )
         .map(CanonicalOutcome::new)
     }
