@@ -87,11 +87,13 @@
 //! The solver carries O(1) state per Prony term of `G_eq` (`q_k`, `S_k` at a step start, and
 //! per compression step their start values for the dense output), and a step costs
 //! O(terms): every loop runs over the live terms only. The per-term values live in fixed
-//! arrays `[f64; K]` of a capacity class `K ∈ {2, 8, 32, 128}` chosen once per solve
+//! arrays `[f64; K]` of a capacity class `K ∈ {2, 8, 16, 32, 128}` chosen once per solve
 //! (`Solver<K>`, the smallest class that holds the terms; at most [`FAST_MAX_TERMS`]), so the
 //! one- and two-term materials keep small stack copies of the state (the dense evaluations of
 //! the Ting roots return it by value) while 30 shear terms with a viscoelastic bulk fit. The
-//! padding of a class costs only its zero initialisation, at most 4x the live terms. Terms
+//! padding of a class costs its zero initialisation and copies, at most 4x the live terms (the
+//! class 16 holds the 9 to 16 terms a reduced real polymer keeps, module `reduce`: 5.5 % fewer
+//! instructions than the class 32 for `polyisobutylene`, 5 % for `epoxy`, callgrind). Terms
 //! with the same time are merged into one before the solve (a series given in parts is solved
 //! as the same series), terms with `tau = inf` join `c_inf`, and terms with `tau = 0` or
 //! `c_k = 0` are dropped.
@@ -577,7 +579,8 @@ fn dispatch(
         0 => Ok(hertz(c_inf, history)),
         1..=2 => solve_terms::<2>(geom, c_inf, live, rtol, history, mode),
         3..=8 => solve_terms::<8>(geom, c_inf, live, rtol, history, mode),
-        9..=32 => solve_terms::<32>(geom, c_inf, live, rtol, history, mode),
+        9..=16 => solve_terms::<16>(geom, c_inf, live, rtol, history, mode),
+        17..=32 => solve_terms::<32>(geom, c_inf, live, rtol, history, mode),
         _ => solve_terms::<FAST_MAX_TERMS>(geom, c_inf, live, rtol, history, mode),
     }
 }
