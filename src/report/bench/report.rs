@@ -311,8 +311,7 @@ impl BenchReport {
         v.push(match self.scipy.ratio() {
             Some(x) => format!(
                 "`fast` against the SciPy script a user would write (DOP853, rtol {SCIPY_RTOL:.0e}, \
-                 {SCIPY_ROWS} rows): {x:.0}x less time (no target; the margin was about 500x before \
-                 the verification's price was cut)"
+                 {SCIPY_ROWS} rows): {x:.0}x less time (reported, no target number)"
             ),
             None => "`fast` against the SciPy script: not measured (see above)".to_string(),
         });
