@@ -120,11 +120,17 @@ pub fn solve_rows(file: &str, rows: &[Row], opts: &SolveOptions) -> Result<Vec<O
 /// Solve the impact of every set of groups in canonical units (`m = R = v0 = G_inf = 1`) in
 /// parallel (rayon), results in input order; the error is that of the first failing entry (in
 /// input order) with its index. The computation of `cor --input` (and of the Python package's
-/// `cor`), without the file.
+/// `cor`), without the file. Their outputs hold no force, so the maximum force is not located
+/// after each solve ([`SolveOptions::peak_force`] false: `max_force` is the largest sampled
+/// force with its parabola).
 pub fn solve_groups(
     groups: &[Groups],
     opts: &SolveOptions,
 ) -> std::result::Result<Vec<Outcome>, (usize, Error)> {
+    let opts = &SolveOptions {
+        peak_force: false,
+        ..*opts
+    };
     let results: Vec<Result<Outcome>> = groups
         .par_iter()
         .map(|&g| Impact::from_groups(g).and_then(|imp| solve(&imp, opts)))

@@ -19,6 +19,7 @@ use crate::solvers::{solve, SolveOptions, SolverKind};
 
 mod baseline;
 mod report;
+mod scipy;
 mod targets;
 #[cfg(test)]
 mod tests;
@@ -26,6 +27,7 @@ mod timing;
 
 pub use baseline::*;
 pub use report::*;
+pub use scipy::*;
 pub use targets::*;
 pub use timing::*;
 /// One measured point of the work-precision diagram.

@@ -12,6 +12,7 @@ pub fn summary(
     batch: Option<(usize, f64)>,
     timed: &[(TimedRows, Vec<RowTiming>)],
     general: &[GeneralTiming],
+    general_lines: &[String],
 ) -> String {
     let mut s = String::new();
     let _ = writeln!(
@@ -105,14 +106,8 @@ pub fn summary(
         );
     }
     if !timed.is_empty() {
-        let random = random_rows_of(timed);
         s.push('\n');
-        s.push_str(&targets(
-            timed,
-            speedup(points),
-            batch,
-            &general_targets(general, random),
-        ));
+        s.push_str(&targets(timed, speedup(points), batch, general_lines));
     }
     s
 }
@@ -160,6 +155,8 @@ pub struct BenchReport {
     pub machine: String,
     /// This build against an earlier one, when asked for.
     pub baseline: Option<BaselineRatio>,
+    /// `fast` against the SciPy script ([`scipy_comparison`]).
+    pub scipy: ScipyComparison,
 }
 
 /// Units of progress [`run_full`] reports: the work-precision points and, without `quick`,
@@ -211,6 +208,7 @@ pub fn run_full(opts: &BenchOptions, tick: &dyn Fn()) -> Result<BenchReport> {
     curve::run(&scene.impact, &scene.options, &range, &|| {})?;
     let curve_seconds = t0.elapsed().as_secs_f64();
     let shapes = shape_timing(opts.budget)?;
+    let scipy = scipy_comparison(opts.budget, if opts.quick { 1 } else { 3 })?;
     let baseline = match &opts.baseline {
         Some(b) => {
             let exe = std::env::current_exe().map_err(|e| Error::io("current_exe", e))?;
@@ -229,6 +227,7 @@ pub fn run_full(opts: &BenchOptions, tick: &dyn Fn()) -> Result<BenchReport> {
         batch,
         curve_seconds,
         shapes,
+        scipy,
         machine: machine(),
     })
 }
@@ -293,15 +292,30 @@ impl BenchReport {
         if let Some(b) = &self.baseline {
             s.push_str(&b.text());
         }
+        s.push_str(&self.scipy.text());
         if !self.timed.is_empty() {
             s.push_str(&targets(
                 &self.timed,
                 speedup(&self.points),
                 self.batch,
-                &general_targets(&self.general, random),
+                &self.general_lines(),
             ));
         }
         s
+    }
+
+    /// The entries of the design targets beyond the row timings: the polymers against the
+    /// standard solid and `fast` against the SciPy script.
+    fn general_lines(&self) -> Vec<String> {
+        let mut v = general_targets(&self.general, random_rows_of(&self.timed));
+        v.push(match self.scipy.ratio() {
+            Some(x) => format!(
+                "`fast` against the SciPy script a user would write (DOP853, rtol {SCIPY_RTOL:.0e}, \
+                 {SCIPY_ROWS} rows): {x:.0}x less time (reported, no target number)"
+            ),
+            None => "`fast` against the SciPy script: not measured (see above)".to_string(),
+        });
+        v
     }
 
     /// The body of the performance section of VALIDATION.md.
@@ -312,6 +326,7 @@ impl BenchReport {
             self.batch,
             &self.timed,
             &self.general,
+            &self.general_lines(),
         );
         s.push('\n');
         s.push_str(&fit_timing_text(&self.fit));
@@ -327,6 +342,8 @@ impl BenchReport {
             s.push('\n');
             s.push_str(&b.text());
         }
+        s.push('\n');
+        s.push_str(&self.scipy.text());
         s
     }
 }

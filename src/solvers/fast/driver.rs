@@ -87,7 +87,7 @@ fn finish<const K: usize>(
     levels: u32,
     tight_checks: u32,
 ) -> Outcome {
-    if let Some((t_max, f_max)) = s.peak_node {
+    if let (true, Some((t_max, f_max))) = (s.refine_peak, s.peak_node) {
         out.max_force = s.refine_peak(t_max).max(f_max);
     }
     out.cor_error_estimate = Some(estimate);
