@@ -298,23 +298,18 @@ pub(super) fn analyse(
                 }
             }
         }
-        // Another point met by the fit (a minimum of another start or of a nu level with nu
-        // held, or any point evaluated on the way: a step of a minimisation, a Jacobian, a
-        // profile) whose misfit is within the likelihood-ratio threshold: the profile of every
-        // parameter and group lies at or below it there, so every interval is widened to
-        // contain it (and judged again by its reach).
-        let mut within: Vec<(f64, Vec<f64>)> = others
+        // Another point met by the fit (any point evaluated at the fit's rtol: the minimum of
+        // another start or of a nu level with nu held, whose last evaluation is recorded too, a
+        // step of a minimisation, a Jacobian, a profile) whose misfit is within the
+        // likelihood-ratio threshold: the profile of every parameter and group lies at or below
+        // it there, so every interval is widened to contain it (and judged again by its reach).
+        let within: Vec<(f64, Vec<f64>)> = ctx
+            .visited
+            .borrow()
             .iter()
             .filter(|o| o.0 - best_ssr <= threshold)
             .cloned()
             .collect();
-        within.extend(
-            ctx.visited
-                .borrow()
-                .iter()
-                .filter(|o| o.0 - best_ssr <= threshold)
-                .cloned(),
-        );
         // The profile goes on beyond such a point (it lies in another basin, which the checks
         // of the Wald ends did not reach): each end moved to a point is followed outward along
         // the profile from there like a Wald end ([`Ctx::check_end`]).

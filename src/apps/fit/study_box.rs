@@ -207,16 +207,15 @@ pub fn set_outcome(cfg: &BoxConfig, k: u64) -> Result<SetOutcome> {
     let r = fit(&model, &data, &fixed)?;
     let ssr_fit: f64 = r.residuals.iter().map(|x| x.weighted * x.weighted).sum();
     let ssr_truth = misfit(&model, &data, &truth)?;
-    let reported = QUANTITIES
-        .iter()
-        .map(|&name| r.get(name).map_or((None, None), |e| (e.value, e.ci95)))
-        .collect();
-    let status = QUANTITIES
+    let (status, reported) = QUANTITIES
         .iter()
         .map(|&name| {
-            let e = r.get(name)?;
+            let Some(e) = r.get(name) else {
+                return (None, (None, None));
+            };
+            let reported = (e.value, e.ci95);
             if e.fixed {
-                return None;
+                return (None, reported);
             }
             let t = truth_of(name, &truth);
             let covered = e.ci95.is_some_and(|(a, b)| a <= t && t <= b);
@@ -228,15 +227,16 @@ pub fn set_outcome(cfg: &BoxConfig, k: u64) -> Result<SetOutcome> {
                 && kind == ParamKind::Positive
                 && r.model.index(name).is_some()
                 && e.value.is_some();
-            Some(if e.identifiable {
+            let status = if e.identifiable {
                 Status::Determined(covered)
             } else if conditional {
                 Status::Conditional(covered)
             } else {
                 Status::NotDetermined
-            })
+            };
+            (Some(status), reported)
         })
-        .collect();
+        .unzip();
     Ok(SetOutcome {
         set: k,
         cell,
