@@ -187,6 +187,27 @@ fn degenerate_data_give_clear_errors() {
         let e = parse(text).unwrap_err().to_string();
         assert!(e.contains(needle), "{text:?}: {e}");
     }
+    // above 1 only as noise around a CoR at most 1: within 5 standard deviations, kept as
+    // measured (clipping would bias the fit); beyond them, or without cor_sd, refused
+    let d = parse("v0,cor,cor_sd\n1,1.02,0.01\n2,0.5,0.01\n").unwrap();
+    assert_eq!(d.observations[0].cor, 1.02);
+    for text in [
+        "v0,cor,cor_sd\n1,1.06,0.01\n2,0.5,0.01\n",
+        "v0,cor\n1,1.02\n2,0.5\n",
+    ] {
+        let e = parse(text).unwrap_err().to_string();
+        assert!(
+            e.contains("test.csv:2: cor = 1.06e0 is out of range: allowed 0 < cor <= 1, or cor <= 1 + 5 cor_sd")
+                || e.contains("test.csv:2: cor = 1.02e0 is out of range"),
+            "{text:?}: {e}"
+        );
+    }
+    let mut built = parse("v0,cor,cor_sd\n1,0.9,0.01\n2,0.5,0.01\n").unwrap();
+    built.observations[0].cor = 1.06;
+    assert!(matches!(
+        built.validate(),
+        Err(Error::OutOfRange { field: "cor", .. })
+    ));
 }
 
 #[test]

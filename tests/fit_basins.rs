@@ -276,8 +276,8 @@ fn box_set(k: u64) -> (FitResult, [f64; 4], f64, Vec<Option<f64>>) {
 /// The reported minimum is no worse than the truth's misfit, and every quantity reported
 /// determined either holds its truth in its 95 % interval or provably may exclude it: for a
 /// parameter, the profile misfit at the true value (a fit with the parameter fixed there,
-/// with its own multi-start) lies above the threshold; for a group, the truth's own misfit
-/// does (a necessary condition: the profile at the group's true value is at most that).
+/// with its own multi-start) lies above the threshold; for a group, the profile misfit at the
+/// group's true value (`fit::profile_misfit`, from the truth and from the estimate) does.
 fn box_set_keeps_its_promises(k: u64) {
     let (r, truth, truth_ssr, fixed) = box_set(k);
     let best = ssr(&r);
@@ -316,10 +316,20 @@ fn box_set_keeps_its_promises(k: u64) {
             continue;
         };
         let t = group_truth(&e.name);
+        if a <= t && t <= b {
+            continue;
+        }
+        let starts = [truth.to_vec(), r.values.clone()];
+        let p = fit::profile_misfit(&r.model, &r.data, &fixed, &e.name, t, &starts)
+            .unwrap()
+            .unwrap();
         assert!(
-            (a <= t && t <= b) || truth_ssr - best >= threshold,
-            "set {k}: {} = {t} outside [{a}, {b}] with the truth within the threshold",
-            e.name
+            p <= truth_ssr * (1.0 + 1e-9) && p - best >= threshold * (1.0 - 1e-3),
+            "set {k}: {} = {t} outside [{a}, {b}] with the profile {} above the minimum \
+             (threshold {threshold}, truth's misfit {})",
+            e.name,
+            p - best,
+            truth_ssr - best
         );
     }
 }
@@ -373,4 +383,76 @@ fn box_set_22_interval_follows_the_profile_past_another_basin() {
 #[test]
 fn box_set_125_crossing_is_bracketed() {
     box_set_keeps_its_promises(125);
+}
+
+/// Set 315 (`nu` fixed, CoR only, 1 % noise): the interval of `p2` leaves out the truth 0.189 by
+/// a hair (lower end 0.190). The profile misfit of `p2` (`fit::profile_misfit`) is the
+/// estimate's misfit at the estimate, reaches the threshold at the interval's ends (each the
+/// outer end of a bracket where the profile was seen at or above it) and lies above it at the
+/// truth, so this miss is one a 95 % likelihood-ratio interval allows.
+#[test]
+fn box_set_315_p2_interval_ends_where_the_profile_crosses() {
+    let (r, truth, truth_ssr, fixed) = box_set(315);
+    let best = ssr(&r);
+    let (q, s) = (r.quantile.unwrap(), r.noise_scale.unwrap());
+    let threshold = q * q * s * s;
+    let e = r.get("p2").unwrap();
+    assert!(e.identifiable, "{}", r.verdict);
+    let (value, (a, b)) = (e.value.unwrap(), e.ci95.unwrap());
+    let profile = |t: f64| {
+        fit::profile_misfit(
+            &r.model,
+            &r.data,
+            &fixed,
+            "p2",
+            t,
+            std::slice::from_ref(&r.values),
+        )
+        .unwrap()
+        .unwrap()
+            - best
+    };
+    assert!(profile(value).abs() <= 1e-6 * best, "{}", profile(value));
+    for end in [a, b] {
+        assert!(
+            profile(end) >= threshold * (1.0 - 1e-3),
+            "p2 = {end}: {} below the threshold {threshold}",
+            profile(end)
+        );
+    }
+    let p2_truth = truth[0] / truth[1];
+    assert!(!(a <= p2_truth && p2_truth <= b));
+    let at_truth = fit::profile_misfit(
+        &r.model,
+        &r.data,
+        &fixed,
+        "p2",
+        p2_truth,
+        &[truth.to_vec(), r.values.clone()],
+    )
+    .unwrap()
+    .unwrap();
+    assert!(at_truth - best >= threshold && at_truth <= truth_ssr * (1.0 + 1e-9));
+    // unknown or fixed quantities have no profile
+    assert_eq!(
+        fit::profile_misfit(
+            &r.model,
+            &r.data,
+            &fixed,
+            "nu",
+            0.3,
+            std::slice::from_ref(&r.values)
+        )
+        .unwrap(),
+        None
+    );
+    assert!(fit::profile_misfit(
+        &r.model,
+        &r.data,
+        &fixed,
+        "p2",
+        -1.0,
+        std::slice::from_ref(&r.values)
+    )
+    .is_err());
 }

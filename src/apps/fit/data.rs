@@ -1,7 +1,9 @@
 //! Drop-test data for `fit`: the CSV reader and the validated observations.
 //!
 //! Columns (header required, SI units): `v0` (m/s, `0 < v0 < inf`) and `cor`
-//! (`0 < cor <= 1`), optionally `cor_sd` (`> 0`), `contact_time` (s, `> 0`),
+//! (`0 < cor <= 1`, or up to `1 + 5 cor_sd` when `cor_sd` is given: a measured CoR above 1 is
+//! read as noise around a CoR at most 1, [`cor_allowed`]), optionally `cor_sd` (`> 0`),
+//! `contact_time` (s, `> 0`),
 //! `contact_time_sd` (s, `> 0`, only beside `contact_time`) and `setup`: the scene file (TOML,
 //! relative to the data file's folder) whose sphere was dropped in that row; rows without a
 //! setup use the `--scene` given to `fit` (or the embedded default scene). An optional column
@@ -14,6 +16,23 @@ use crate::error::{escape_text, Error, Result};
 use crate::io::scene::Scene;
 use crate::model::geometry::Shape;
 use crate::model::impact::Sphere;
+
+/// How many standard deviations a measured CoR may lie above 1 ([`cor_allowed`]).
+pub const COR_ABOVE_ONE_SDS: f64 = 5.0;
+
+/// The allowed range of a measured CoR, in words.
+pub const COR_ALLOWED: &str = "0 < cor <= 1, or cor <= 1 + 5 cor_sd when cor_sd is given";
+
+/// Whether a measured CoR is admissible: `0 < cor <= 1`, or, with its standard deviation
+/// known, up to [`COR_ABOVE_ONE_SDS`] standard deviations above 1. A CoR is at most 1, but a
+/// measurement of it is not: clipping or dropping the values that noise pushes above 1 biases
+/// a fit towards dissipation (docs/theory.md §16.2), so they are kept as measured. Without a
+/// standard deviation noise cannot be told from an error, and values above 1 are refused.
+pub fn cor_allowed(cor: f64, cor_sd: Option<f64>) -> bool {
+    cor.is_finite()
+        && cor > 0.0
+        && (cor <= 1.0 || cor_sd.is_some_and(|sd| cor <= 1.0 + COR_ABOVE_ONE_SDS * sd))
+}
 
 /// The columns a data file may have.
 pub const COLUMNS: [&str; 6] = [
@@ -112,7 +131,7 @@ impl Data {
                 .count()
     }
     /// Check data built in code the way [`parse`] checks a file: at least one drop, every setup
-    /// index valid, `0 < v0 < inf`, `0 < cor <= 1`, contact times and standard deviations
+    /// index valid, `0 < v0 < inf`, `cor` as [`cor_allowed`], contact times and standard deviations
     /// finite and positive ([`Error::OutOfRange`] naming the field).
     pub fn validate(&self) -> Result<()> {
         use crate::error::check;
@@ -131,7 +150,6 @@ impl Data {
                 });
             }
             check("v0", o.v0, o.v0 > 0.0, "0 < v0 < inf (m/s)")?;
-            check("cor", o.cor, o.cor > 0.0 && o.cor <= 1.0, "0 < cor <= 1")?;
             for (field, x, allowed) in [
                 ("cor_sd", o.cor_sd, "0 < cor_sd < inf"),
                 ("contact_time", o.contact_time, "0 < contact_time < inf (s)"),
@@ -145,6 +163,7 @@ impl Data {
                     check(field, x, x > 0.0, allowed)?;
                 }
             }
+            check("cor", o.cor, cor_allowed(o.cor, o.cor_sd), COR_ALLOWED)?;
         }
         Ok(())
     }
@@ -301,9 +320,15 @@ pub fn parse(
         };
         let v0 = number(0, |v| v > 0.0, "0 < v0 < inf (m/s)")?
             .ok_or_else(|| err(line, "v0 is empty".into()))?;
-        let cor = number(1, |v| v > 0.0 && v <= 1.0, "0 < cor <= 1")?
-            .ok_or_else(|| err(line, "cor is empty".into()))?;
+        let cor =
+            number(1, |v| v > 0.0, "0 < cor")?.ok_or_else(|| err(line, "cor is empty".into()))?;
         let cor_sd = number(2, |v| v > 0.0, "0 < cor_sd < inf")?;
+        if !cor_allowed(cor, cor_sd) {
+            return Err(err(
+                line,
+                format!("cor = {cor:e} is out of range: allowed {COR_ALLOWED}"),
+            ));
+        }
         let contact_time = number(3, |v| v > 0.0, "0 < contact_time < inf (s)")?;
         let contact_time_sd = number(4, |v| v > 0.0, "0 < contact_time_sd < inf (s)")?;
         if contact_time_sd.is_some() && contact_time.is_none() {

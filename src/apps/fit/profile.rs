@@ -80,7 +80,7 @@ impl Ctx<'_> {
     /// `moving`, re-minimised from each of `starts` (coordinates; the constraint is applied
     /// first), and the coordinates there. `None` when no coordinate of `moving` enters `a`, or
     /// every minimisation fails.
-    fn profile_at(
+    pub(super) fn profile_at(
         &self,
         a: &[f64],
         t: f64,

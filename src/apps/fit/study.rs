@@ -127,12 +127,13 @@ pub fn exact_data(cfg: &StudyConfig) -> Result<Data> {
 }
 
 /// `exact` with relative Gaussian noise of standard deviation `noise` (the standard deviations
-/// stay those of the exact values), drawn from `seed` and `rep`. CoRs are capped at 1.
+/// stay those of the exact values), drawn from `seed` and `rep`. CoRs above 1 are kept as
+/// measured ([`super::data::cor_allowed`]).
 pub fn noisy(exact: &Data, noise: f64, seed: u64, rep: u64) -> Data {
     let mut rng = SplitMix64::new(seed ^ rep.wrapping_mul(0x9E6C_63D0_676A_9A99));
     let mut d = exact.clone();
     for o in &mut d.observations {
-        o.cor = (o.cor * (1.0 + noise * rng.normal())).min(1.0);
+        o.cor *= 1.0 + noise * rng.normal();
         if let Some(t) = o.contact_time.as_mut() {
             *t *= 1.0 + noise * rng.normal();
         }
