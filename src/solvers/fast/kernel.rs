@@ -133,7 +133,7 @@ fn jhat_tol_ex(nu: f64, x: f64, tol: f64, ex: f64) -> f64 {
 
 /// `Ĵ_m(x)` for the integers `m = 1..=N-1` into `out[m]` (`out[0]` is unused).
 ///
-/// For `x >= 2` as [`jhat_family`] (`ν0 = 1`); for `x < 2` one series for the highest order, `Ĵ_ν(x) = e^(-x) Σ_j x^j / (j! (ν + j))`,
+/// For `x >= 2` as [`jhat_family_ex`] (`ν0 = 1`); for `x < 2` one series for the highest order, `Ĵ_ν(x) = e^(-x) Σ_j x^j / (j! (ν + j))`,
 /// then the backward recurrence `Ĵ_ν = (1 - x Ĵ_(ν+1)) / ν` (stable: errors shrink by `x/ν`).
 /// The one-argument form of [`jhat_int_lanes`], which the solver uses; kept as its reference
 /// in the tests.
@@ -238,17 +238,18 @@ pub(crate) fn jhat_int_lanes<const N: usize, const L: usize>(
     }
 }
 
-/// `Ĵ_(ν0 + m)(x)` for `m = 0..N` into `out[m]` (`ν0` a positive multiple of 1/2, `N` small),
-/// the series truncated at `tol` relative (at least 1e-17): forward recurrence from `Ĵ_ν0` for
-/// `x >= 2`, otherwise the positive series of the highest order and the backward recurrence.
+/// [`jhat_family_ex`] with its own `exp(-x)`.
 #[cfg(test)]
 pub(crate) fn jhat_family<const N: usize>(nu0: f64, x: f64, tol: f64, out: &mut [f64; N]) {
     jhat_family_ex(nu0, x, tol, exp_neg(x), out);
 }
 
-/// [`jhat_family`] with `exp(-x)` given (`ex`, as from [`exp_neg`]): the kernels of one
-/// argument share one exponential (the first step needs two families and `exp(-x)` itself).
-/// For `ν0 = 1` and `x >= 2` the base is `Ĵ_1 = (1 - e^(-x)) / x` (no cancellation there).
+/// `Ĵ_(ν0 + m)(x)` for `m = 0..N` into `out[m]` (`ν0` a positive multiple of 1/2, `N` small),
+/// the series truncated at `tol` relative (at least 1e-17): forward recurrence from `Ĵ_ν0` for
+/// `x >= 2`, otherwise the positive series of the highest order and the backward recurrence.
+/// `exp(-x)` is given (`ex`, as from [`exp_neg`]): the kernels of one argument share one
+/// exponential (the first step needs two families and `exp(-x)` itself). For `ν0 = 1` and
+/// `x >= 2` the base is `Ĵ_1 = (1 - e^(-x)) / x` (no cancellation there).
 pub(crate) fn jhat_family_ex<const N: usize>(
     nu0: f64,
     x: f64,
