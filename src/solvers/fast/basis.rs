@@ -229,6 +229,7 @@ impl Jt {
 }
 
 /// Kernels of a regular step from `Ĵ_1 ..= Ĵ_(S+1)` (`t[m] = Ĵ_m`, `t[0]` unused).
+#[inline(always)]
 pub(super) fn jt_regular(t: &[f64; S + 2]) -> Jt {
     let mut j = Jt::ZERO;
     j.one = t[1];
@@ -237,14 +238,15 @@ pub(super) fn jt_regular(t: &[f64; S + 2]) -> Jt {
     j
 }
 
-/// Kernels of the first step (powers of `sqrt(θ)`) at `x`, the series truncated at `tol`.
-pub(super) fn jt_first(x: f64, tol: f64) -> Jt {
+/// Kernels of the first step (powers of `sqrt(θ)`) at `x`, the series truncated at `tol`,
+/// with `exp(-x)` given (`ex`): both families from that one exponential.
+pub(super) fn jt_first(x: f64, tol: f64, ex: f64) -> Jt {
     let kind = Kind::First;
     // integer family 1, 2, ..., S+1 and half-integer family 3/2, 5/2, ..., S+1/2
     let mut fi = [0.0; S + 1];
     let mut fh = [0.0; S + 1];
-    kernel::jhat_family(1.0, x, tol, &mut fi);
-    kernel::jhat_family(1.5, x, tol, &mut fh);
+    kernel::jhat_family_ex(1.0, x, tol, ex, &mut fi);
+    kernel::jhat_family_ex(1.5, x, tol, ex, &mut fh);
     let pick = |nu: f64| -> f64 {
         if nu.fract() == 0.0 {
             fi[nu as usize - 1]
@@ -280,13 +282,21 @@ pub(super) fn jt_lanes<const L: usize>(kind: Kind, xs: &[f64; L], tol: f64) -> (
         Kind::Regular => {
             let mut t = [[0.0; S + 2]; L];
             kernel::jhat_int_lanes(xs, tol, &mut t, &mut ex);
-            (std::array::from_fn(|i| jt_regular(&t[i])), ex)
+            let mut jj = [Jt::ZERO; L];
+            for i in 0..L {
+                jj[i] = jt_regular(&t[i]);
+            }
+            (jj, ex)
         }
         Kind::First => {
             for i in 0..L {
                 ex[i] = kernel::exp_neg(xs[i]);
             }
-            (std::array::from_fn(|i| jt_first(xs[i], tol)), ex)
+            let mut jj = [Jt::ZERO; L];
+            for i in 0..L {
+                jj[i] = jt_first(xs[i], tol, ex[i]);
+            }
+            (jj, ex)
         }
     }
 }

@@ -316,6 +316,15 @@ impl<const K: usize> Solver<K> {
 
     /// Dense compression output at `t1 ∈ [0, t_m]`.
     pub(super) fn comp_at(&mut self, t1: f64) -> Pt<K> {
+        self.comp_at_decayed(t1, None)
+    }
+
+    /// [`Solver::comp_at`] for a Ting root, with the factors `decay[k] = exp(-(t - t1)/tau_k)`
+    /// that multiply `q_k` and `S_k` there: a term whose factor is exactly 0 (flushed by
+    /// `exp_neg`) is not evaluated and its `q_k`, `S_k` are left 0, since they enter only
+    /// through that product (the fast terms of a real polymer, for most of the restitution).
+    pub(super) fn comp_at_decayed(&mut self, t1: f64, decay: Option<&[f64; K]>) -> Pt<K> {
+        let skip = |k: usize| decay.is_some_and(|e| e[k] == 0.0);
         self.evaluations += 1;
         // the roots move slowly: try the last segment and its neighbour first
         let n = self.comp.len();
@@ -333,7 +342,7 @@ impl<const K: usize> Solver<K> {
         let seg = &self.comp[i];
         let inv_h = 1.0 / seg.h;
         let th = ((t1 - seg.t0) * inv_h).max(0.0);
-        if self.dense.len() <= i * self.k || !self.dense_ok[i] {
+        if self.dense.len() <= i * self.k {
             return self.eval_seg(seg, th, true);
         }
         if seg.kind == Kind::First {
@@ -349,9 +358,28 @@ impl<const K: usize> Solver<K> {
             let mut s = [0.0; K];
             let sig = th.sqrt();
             for k in 0..self.k {
+                if skip(k) {
+                    continue;
+                }
                 let kp = &self.dense[i * self.k + k];
-                s[k] = kp[0].eval(&self.coef, sig, 0.0);
-                q[k] = kp[1].eval(&self.coef, sig, 0.0);
+                if kp[0].n > 0 {
+                    s[k] = kp[0].eval(&self.coef, sig, 0.0);
+                    q[k] = kp[1].eval(&self.coef, sig, 0.0);
+                    continue;
+                }
+                // a term relaxing within the step (no series in sqrt(θ)): its exact kernels
+                // at θ, as in `eval_seg`
+                let x = th * seg.h / self.tau[k];
+                let ex = kernel::exp_neg(x);
+                let jj = jt_first(x, self.series_tol(), ex);
+                let mut sk = ex * seg.s0[k] + seg.vh * th * jj.one;
+                let mut qk = ex * seg.q0[k] + seg.wfix * 1.5 * p.w15 * jj.wfix;
+                for j in 0..S {
+                    sk += seg.alpha[j] * dexp(Kind::First, j) * p.d0[j] * jj.d[j];
+                    qk += seg.beta[j] * wexp(Kind::First, j) * p.w[j] * jj.w[j];
+                }
+                s[k] = sk;
+                q[k] = qk;
             }
             return Pt {
                 d,
@@ -374,6 +402,9 @@ impl<const K: usize> Solver<K> {
         let mut q = [0.0; K];
         let mut s = [0.0; K];
         for k in 0..self.k {
+            if skip(k) {
+                continue;
+            }
             let kp = &self.dense[i * self.k + k];
             let ex = if kp[0].amp != 0.0 || kp[1].amp != 0.0 {
                 kernel::exp_neg(kp[0].lam * th)
@@ -397,7 +428,6 @@ impl<const K: usize> Solver<K> {
     pub(super) fn build_dense(&mut self) {
         let trunc = self.series_tol();
         let mut dense = Vec::with_capacity(self.comp.len() * self.k);
-        let mut ok = Vec::with_capacity(self.comp.len());
         let mut coef = Vec::with_capacity(self.comp.len() * self.k * 24);
         for seg in &self.comp {
             if seg.kind == Kind::First {
@@ -408,26 +438,21 @@ impl<const K: usize> Solver<K> {
                 let mut pq = [0.0; S + 6];
                 pq[3] = seg.wfix;
                 pq[6..6 + S].copy_from_slice(&seg.beta);
-                let mut good = true;
                 for k in 0..self.k {
                     let lam = seg.h / self.tau[k];
-                    // both or neither: the same λ
+                    // both or neither: the same λ; neither (`n = 0`) for a term relaxing within
+                    // the step, which `comp_at` evaluates by its exact kernels
                     match KernelPoly::new_sigma(&ps, lam, &mut coef) {
                         Some(a) => {
                             let b = KernelPoly::new_sigma(&pq, lam, &mut coef)
                                 .expect("same λ as the first series");
                             dense.push([a, b]);
                         }
-                        None => {
-                            good = false;
-                            dense.push([KernelPoly::default(); 2]);
-                        }
+                        None => dense.push([KernelPoly::default(); 2]),
                     }
                 }
-                ok.push(good);
                 continue;
             }
-            ok.push(true);
             let mut ps = [0.0; S + 2];
             ps[0] = seg.dn;
             ps[1] = seg.vh;
@@ -445,6 +470,5 @@ impl<const K: usize> Solver<K> {
         }
         self.dense = dense;
         self.coef = coef;
-        self.dense_ok = ok;
     }
 }

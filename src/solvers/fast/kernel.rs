@@ -38,7 +38,7 @@ const FORWARD_X: f64 = 2.0;
 /// asymptotic series has error below `e^(-x)`.
 const ASYMPTOTIC_X: f64 = 40.0;
 
-/// The `x` from which [`jhat_tol`] uses the asymptotic series at relative tolerance `tol`:
+/// The `x` from which [`jhat_tol_ex`] uses the asymptotic series at relative tolerance `tol`:
 /// its smallest term and the part it omits are about `e^(-x)` relative, so `ln(1/tol) + 4`
 /// (measured against 40-digit quadrature for `ν` = 3/2 to 11/2: at most 0.94 `tol` for `tol`
 /// from 1e-7 to 1e-15), at most [`ASYMPTOTIC_X`].
@@ -57,18 +57,29 @@ pub(crate) fn exp_neg(x: f64) -> f64 {
     }
 }
 
-/// `Ĵ_ν(x)` for any `ν > 0`, `x >= 0` to double precision ([`jhat_tol`] at 1e-17).
+/// `Ĵ_ν(x)` for any `ν > 0`, `x >= 0` to double precision ([`jhat_tol_ex`] at 1e-17).
 #[cfg(test)]
 pub(crate) fn jhat(nu: f64, x: f64) -> f64 {
     jhat_tol(nu, x, 1e-17)
 }
 
+/// [`jhat_tol_ex`] with its own `exp(-x)`.
+#[cfg(test)]
+pub(crate) fn jhat_tol(nu: f64, x: f64, tol: f64) -> f64 {
+    jhat_tol_ex(nu, x, tol, exp_neg(x))
+}
+
 /// `Ĵ_ν(x)` for any `ν > 0`, `x >= 0` (series or asymptotic expansion), truncated at `tol`
 /// relative (`tol >= 1e-17`; the series terms decay factorially, so the first omitted one
-/// bounds the error).
-pub(crate) fn jhat_tol(nu: f64, x: f64, tol: f64) -> f64 {
+/// bounds the error), with `exp(-x)` given (`ex`, as from [`exp_neg`]).
+fn jhat_tol_ex(nu: f64, x: f64, tol: f64, ex: f64) -> f64 {
     let tol = tol.max(1e-17);
-    let x_asym = asymptotic_x(tol);
+    // (the logarithm of `asymptotic_x` only where it can matter)
+    let x_asym = if x >= ASYMPTOTIC_X {
+        ASYMPTOTIC_X
+    } else {
+        asymptotic_x(tol)
+    };
     let two_nu = 2.0 * nu;
     if x < x_asym && two_nu.fract() == 0.0 && two_nu < 64.0 {
         // the same series with 1/j and 1/(ν + j) = 2/(2ν + 2j) from the table (no divisions)
@@ -85,7 +96,7 @@ pub(crate) fn jhat_tol(nu: f64, x: f64, tol: f64) -> f64 {
                 break;
             }
         }
-        (-x).exp() * sum
+        ex * sum
     } else if x < x_asym {
         let mut t = 1.0; // x^j / j!
         let mut sum = 1.0 / nu;
@@ -99,13 +110,14 @@ pub(crate) fn jhat_tol(nu: f64, x: f64, tol: f64) -> f64 {
                 break;
             }
         }
-        (-x).exp() * sum
+        ex * sum
     } else {
         // divergent: stop at `tol`, or at the smallest term
         let mut term: f64 = 1.0;
         let mut sum = 1.0;
+        let inv_x = 1.0 / x;
         for m in 1..80 {
-            let next = term * -(nu - m as f64) / x;
+            let next = term * -(nu - m as f64) * inv_x;
             if next.abs() > term.abs() {
                 break;
             }
@@ -115,13 +127,13 @@ pub(crate) fn jhat_tol(nu: f64, x: f64, tol: f64) -> f64 {
                 break;
             }
         }
-        sum / x
+        sum * inv_x
     }
 }
 
 /// `Ĵ_m(x)` for the integers `m = 1..=N-1` into `out[m]` (`out[0]` is unused).
 ///
-/// For `x >= 2` as [`jhat_family`] (`ν0 = 1`); for `x < 2` one series for the highest order, `Ĵ_ν(x) = e^(-x) Σ_j x^j / (j! (ν + j))`,
+/// For `x >= 2` as [`jhat_family_ex`] (`ν0 = 1`); for `x < 2` one series for the highest order, `Ĵ_ν(x) = e^(-x) Σ_j x^j / (j! (ν + j))`,
 /// then the backward recurrence `Ĵ_ν = (1 - x Ĵ_(ν+1)) / ν` (stable: errors shrink by `x/ν`).
 /// The one-argument form of [`jhat_int_lanes`], which the solver uses; kept as its reference
 /// in the tests.
@@ -164,6 +176,9 @@ pub(crate) fn jhat_int<const N: usize>(x: f64, out: &mut [f64; N]) {
 /// below 2 run in one loop (until every one has converged), so that their independent
 /// dependency chains overlap instead of running one after another: the kernels of a step's
 /// nodes are needed together. `N >= 3`.
+// (inlined into the callers' loops over the terms: as a call, with its arrays passed through
+// memory, it cost 7% more instructions in a solve of the 30-term polymer scene)
+#[inline(always)]
 pub(crate) fn jhat_int_lanes<const N: usize, const L: usize>(
     xs: &[f64; L],
     tol: f64,
@@ -223,24 +238,39 @@ pub(crate) fn jhat_int_lanes<const N: usize, const L: usize>(
     }
 }
 
+/// [`jhat_family_ex`] with its own `exp(-x)`.
+#[cfg(test)]
+pub(crate) fn jhat_family<const N: usize>(nu0: f64, x: f64, tol: f64, out: &mut [f64; N]) {
+    jhat_family_ex(nu0, x, tol, exp_neg(x), out);
+}
+
 /// `Ĵ_(ν0 + m)(x)` for `m = 0..N` into `out[m]` (`ν0` a positive multiple of 1/2, `N` small),
 /// the series truncated at `tol` relative (at least 1e-17): forward recurrence from `Ĵ_ν0` for
 /// `x >= 2`, otherwise the positive series of the highest order and the backward recurrence.
-pub(crate) fn jhat_family<const N: usize>(nu0: f64, x: f64, tol: f64, out: &mut [f64; N]) {
+/// `exp(-x)` is given (`ex`, as from [`exp_neg`]): the kernels of one argument share one
+/// exponential (the first step needs two families and `exp(-x)` itself). For `ν0 = 1` and
+/// `x >= 2` the base is `Ĵ_1 = (1 - e^(-x)) / x` (no cancellation there).
+pub(crate) fn jhat_family_ex<const N: usize>(
+    nu0: f64,
+    x: f64,
+    tol: f64,
+    ex: f64,
+    out: &mut [f64; N],
+) {
     let tol = tol.max(1e-17);
     if x >= FORWARD_X {
+        let inv_x = 1.0 / x;
         let mut j = if nu0 == 1.0 {
-            -(-x).exp_m1() / x
+            (1.0 - ex) * inv_x
         } else {
             // the recurrence multiplies the base's error by up to Π_m (ν0 + m) / x
             let mut amp: f64 = 1.0;
             for m in 0..N.saturating_sub(1) {
-                amp = amp.max(amp * (nu0 + m as f64) / x);
+                amp = amp.max(amp * (nu0 + m as f64) * inv_x);
             }
-            jhat_tol(nu0, x, tol / amp)
+            jhat_tol_ex(nu0, x, tol / amp, ex)
         };
         out[0] = j;
-        let inv_x = 1.0 / x;
         for m in 1..N {
             j = (1.0 - (nu0 + (m - 1) as f64) * j) * inv_x;
             out[m] = j;
@@ -264,7 +294,7 @@ pub(crate) fn jhat_family<const N: usize>(nu0: f64, x: f64, tol: f64, out: &mut 
             break;
         }
     }
-    let mut v = (-x).exp() * sum;
+    let mut v = ex * sum;
     out[N - 1] = v;
     for m in (0..N - 1).rev() {
         v = (1.0 - x * v) * 2.0 * RECIP[two_nu0 + 2 * m];

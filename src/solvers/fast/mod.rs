@@ -323,7 +323,6 @@ struct Solver<const K: usize> {
     dense: Vec<[KernelPoly; 2]>,
     /// Coefficient store of the dense kernel polynomials.
     coef: Vec<f64>,
-    dense_ok: Vec<bool>,
     c_inf: f64,
     c: [f64; K],
     tau: [f64; K],
@@ -619,7 +618,6 @@ fn solve_terms<const K: usize>(
         comp: Vec::with_capacity(64),
         dense: Vec::new(),
         coef: Vec::new(),
-        dense_ok: Vec::new(),
         t_m: 0.0,
         evaluations: 0,
         last_seg: 0,

@@ -95,45 +95,62 @@ impl Reduction {
     }
 }
 
-/// The discrete measure `Σ w_k δ(x - x_k)` scaled to total weight 1 and largest point 1: the
-/// scaled points, the weight and the point scale.
-fn scaled(x: &[f64], w: &[f64]) -> (Vec<f64>, Vec<f64>, f64, f64) {
-    let xs = x.iter().fold(0.0f64, |a, &b| a.max(b));
-    let ws: f64 = w.iter().sum();
-    (
-        x.iter().map(|v| v / xs).collect(),
-        w.iter().map(|v| v / ws).collect(),
-        ws,
-        xs,
-    )
-}
+/// Largest discrete measure of a bound or rule: every group is part of the live terms, at
+/// most [`super::FAST_MAX_TERMS`] (checked by `prepare`).
+const MAX_MEASURE: usize = super::FAST_MAX_TERMS;
 
-/// Stieltjes' procedure on the discrete measure `Σ w_k δ(x - x_k)` (positive weights): the
-/// recurrence coefficients `α_j`, `β_j` (`j < n`, `β_0` the total weight) of its monic
-/// orthogonal polynomials and `‖π_n‖² = ∫ π_n² dμ`, the constant of the `n`-point Gauss
-/// rule's error (docs/theory.md §9.7).
-fn stieltjes(x: &[f64], w: &[f64], n: usize) -> (Vec<f64>, Vec<f64>, f64) {
-    let (xs, ws, wscale, xscale) = scaled(x, w);
-    let mut p_prev = vec![0.0; xs.len()];
-    let mut p = vec![1.0; xs.len()];
-    let (mut alpha, mut beta) = (Vec::with_capacity(n), Vec::with_capacity(n));
+/// Recurrence coefficients of [`stieltjes`] (at most [`REDUCE_MAX_POINTS`] of each).
+type Recurrence = ([f64; REDUCE_MAX_POINTS], [f64; REDUCE_MAX_POINTS]);
+
+/// Stieltjes' procedure on the discrete measure `Σ w_k δ(x - x_k)` (`len` points given by
+/// `x(k)`, `w(k)`; positive weights): the recurrence coefficients `α_j`, `β_j` (`j < n`, `β_0`
+/// the total weight) of its monic orthogonal polynomials and `‖π_n‖² = ∫ π_n² dμ`, the
+/// constant of the `n`-point Gauss rule's error (docs/theory.md §9.7). The measure is scaled to
+/// total weight 1 and largest point 1 for the recurrence. No allocation: the bisections of
+/// [`best_group`] call it for every trial group.
+fn stieltjes(
+    len: usize,
+    x: impl Fn(usize) -> f64,
+    w: impl Fn(usize) -> f64,
+    n: usize,
+) -> (Recurrence, f64) {
+    debug_assert!(len <= MAX_MEASURE && n <= REDUCE_MAX_POINTS);
+    let mut xs = [0.0; MAX_MEASURE];
+    let mut ws = [0.0; MAX_MEASURE];
+    let mut xscale = 0.0f64;
+    let mut wscale = 0.0;
+    for k in 0..len {
+        xs[k] = x(k);
+        ws[k] = w(k);
+        xscale = xscale.max(xs[k]);
+        wscale += ws[k];
+    }
+    for k in 0..len {
+        xs[k] /= xscale;
+        ws[k] /= wscale;
+    }
+    let (xs, ws) = (&xs[..len], &ws[..len]);
+    let mut p_prev = [0.0; MAX_MEASURE];
+    let mut p = [0.0; MAX_MEASURE];
+    p[..len].fill(1.0);
+    let (mut alpha, mut beta) = ([0.0; REDUCE_MAX_POINTS], [0.0; REDUCE_MAX_POINTS]);
     let mut norm_prev = 1.0;
     for j in 0..=n {
         let norm: f64 = ws.iter().zip(&p).map(|(w, p)| w * p * p).sum();
         if j == n {
-            return (alpha, beta, norm * wscale * xscale.powi(2 * n as i32));
+            return ((alpha, beta), norm * wscale * xscale.powi(2 * n as i32));
         }
         let a = ws
             .iter()
             .zip(&p)
-            .zip(&xs)
+            .zip(xs)
             .map(|((w, p), x)| w * x * p * p)
             .sum::<f64>()
             / norm;
         let b = if j == 0 { 1.0 } else { norm / norm_prev };
-        alpha.push(a * xscale);
-        beta.push(b * if j == 0 { wscale } else { xscale * xscale });
-        for k in 0..xs.len() {
+        alpha[j] = a * xscale;
+        beta[j] = b * if j == 0 { wscale } else { xscale * xscale };
+        for k in 0..len {
             let next = (xs[k] - a) * p[k] - if j == 0 { 0.0 } else { b * p_prev[k] };
             p_prev[k] = p[k];
             p[k] = next;
@@ -143,9 +160,10 @@ fn stieltjes(x: &[f64], w: &[f64], n: usize) -> (Vec<f64>, Vec<f64>, f64) {
     unreachable!("the loop returns at j = n")
 }
 
-/// `‖π_n‖²` of [`stieltjes`].
+/// `‖π_n‖²` of [`stieltjes`] for the points `x` with weights `w`.
+#[cfg(test)]
 fn gauss_norm(x: &[f64], w: &[f64], n: usize) -> f64 {
-    stieltjes(x, w, n).2
+    stieltjes(x.len(), |k| x[k], |k| w[k], n).1
 }
 
 /// The `n`-point Gauss rule of the discrete measure `Σ w_k δ(x - x_k)` (Golub–Welsch: the
@@ -153,7 +171,7 @@ fn gauss_norm(x: &[f64], w: &[f64], n: usize) -> f64 {
 /// eigenvectors): `(node, weight)` pairs, `None` unless every node lies within the points'
 /// range and every weight is positive (round-off).
 fn gauss_rule(x: &[f64], w: &[f64], n: usize) -> Option<Vec<(f64, f64)>> {
-    let (alpha, beta, _) = stieltjes(x, w, n);
+    let ((alpha, beta), _) = stieltjes(x.len(), |k| x[k], |k| w[k], n);
     let jac = nalgebra::DMatrix::from_fn(n, n, |i, j| {
         if i == j {
             alpha[i]
@@ -191,9 +209,7 @@ fn slow_bound(slow: &[(f64, f64)], n: usize, t: f64, e: f64, g_t: f64) -> f64 {
     if slow.is_empty() {
         return 0.0;
     }
-    let x: Vec<f64> = slow.iter().map(|(_, tau)| 1.0 / tau).collect();
-    let w: Vec<f64> = slow.iter().map(|(c, _)| *c).collect();
-    let norm = gauss_norm(&x, &w, n);
+    let (_, norm) = stieltjes(slow.len(), |k| 1.0 / slow[k].1, |k| slow[k].0, n);
     t.powi(2 * n as i32) / factorial(2 * n) * norm / (g_t * e * e)
 }
 
@@ -205,9 +221,7 @@ fn fast_bound(fast: &[(f64, f64)], n: usize, t: f64, e: f64, g_t: f64) -> f64 {
         return 0.0;
     }
     let tf = 0.25 * t;
-    let x: Vec<f64> = fast.iter().map(|(_, tau)| *tau).collect();
-    let w: Vec<f64> = fast.iter().map(|(c, tau)| c * tau).collect();
-    let norm = gauss_norm(&x, &w, n);
+    let (_, norm) = stieltjes(fast.len(), |k| fast[k].1, |k| fast[k].0 * fast[k].1, n);
     let moments = factorial(2 * n + 1) * norm / (tf.powi(2 * n as i32 + 1) * g_t * e * e);
     let layer: f64 = fast
         .iter()

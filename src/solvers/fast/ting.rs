@@ -45,12 +45,16 @@ impl<const K: usize> Solver<K> {
         };
         let mut hi_checked = false;
         for _ in 0..tolerances::ROOT_MAX_ITER {
-            let pt = self.comp_at(x);
+            let mut decay = [0.0; K];
+            for k in 0..self.k {
+                decay[k] = kernel::exp_neg((t - x) * self.inv_tau[k]);
+            }
+            let pt = self.comp_at_decayed(x, Some(&decay));
             let mut phi = self.c_inf * (d - pt.d);
             let mut g = self.c_inf;
             let mut f = self.c_inf * pt.w;
             for k in 0..self.k {
-                let ek = kernel::exp_neg((t - x) * self.inv_tau[k]);
+                let ek = decay[k];
                 phi += self.c[k] * (s[k] - ek * pt.s[k]);
                 g += self.c[k] * ek;
                 f += self.c[k] * ek * pt.q[k];
