@@ -23,7 +23,12 @@ import time
 
 import numpy as np
 
-import mdr_impact as mi
+# run as `python python/bench_cor.py`, the script's folder (python/, the package's sources
+# without the compiled extension) would shadow the installed package
+_HERE = pathlib.Path(__file__).resolve().parent
+sys.path = [p for p in sys.path if pathlib.Path(p or ".").resolve() != _HERE]
+
+import mdr_impact as mi  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 BEGIN, END = "<!-- python:begin -->", "<!-- python:end -->"
