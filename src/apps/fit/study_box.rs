@@ -241,7 +241,7 @@ pub fn set_outcome(cfg: &BoxConfig, k: u64) -> Result<SetOutcome> {
             (Some(status), reported)
         })
         .unzip();
-    // where an interval misses, how far above the threshold the profile at the truth lies
+    // where an interval misses: the profile at the truth above the misfit at the estimate
     let starts = [truth.to_vec(), r.values.clone()];
     let profile_excess = QUANTITIES
         .iter()
