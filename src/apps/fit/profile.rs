@@ -5,9 +5,15 @@
 //! profile is still below the threshold. Each end, and a point beyond it, is therefore
 //! re-minimised with the combination held; where the profile lies below the threshold there,
 //! the end is moved outward by stepping along the profile until it crosses, or the quantity is
-//! reported not determined when it does not cross within a factor 10.
+//! reported not determined when it does not cross within a factor 10. [`profile_misfit`] gives
+//! the profile of a named parameter or group at a value, for checks outside the fit (the box
+//! study's misses).
 
-use super::{Ctx, FIT_MAX_HALF_WIDTH, FIT_PROFILE_BEYOND};
+use super::{
+    check_fixed_slots, Ctx, Data, Model, ModelKind, Parameter, FIT_MAX_HALF_WIDTH,
+    FIT_PROFILE_BEYOND,
+};
+use crate::error::Result;
 
 /// A linear constraint `a . c = target` on the coordinates `c`, kept by solving it for the
 /// coordinate `pivot` (whose coefficient is not zero).
@@ -206,4 +212,88 @@ impl Ctx<'_> {
         }
         hi
     }
+}
+
+/// Whether the fit holds `g_inf` (CoR only, with the scale free in `g_inf`, `g_1` and `eta`:
+/// module docs; a fixed `k_0` breaks that symmetry, since scaling the moduli then changes `nu`),
+/// and the coordinates it moves.
+pub(super) fn moving_coordinates(
+    model: &Model,
+    data: &Data,
+    fixed: &[Option<f64>],
+) -> (bool, Vec<usize>) {
+    let hold = model.kind == ModelKind::StandardSolid
+        && model.k_0.is_none()
+        && !data.has_contact_times()
+        && [Parameter::GInf, Parameter::G1, Parameter::Eta]
+            .iter()
+            .all(|&p| model.slot(p).is_some_and(|i| fixed[i].is_none()));
+    let moving = (0..model.params.len())
+        .filter(|&i| fixed[i].is_none() && !(hold && i == 0))
+        .collect();
+    (hold, moving)
+}
+
+/// The profile misfit of the parameter or group `name` at the value `target` (SI): the smallest
+/// weighted SSR of `data` over the coordinates the fit moves with `name` held at `target` and the
+/// `fixed` values kept, minimised by Levenberg–Marquardt from each of `starts` (parameter
+/// values) as the fit's interval checks do (docs/theory.md §16.1). A constrained local minimum
+/// is an upper bound of the profile. `None` when `name` is unknown or fixed, no moving
+/// coordinate enters it, or every minimisation fails.
+///
+/// # Errors
+/// [`crate::Error::OutOfRange`] when `fixed` has the wrong length or `target` is not positive (moduli,
+/// groups) or not a Poisson's ratio.
+pub fn profile_misfit(
+    model: &Model,
+    data: &Data,
+    fixed: &[Option<f64>],
+    name: &str,
+    target: f64,
+    starts: &[Vec<f64>],
+) -> Result<Option<f64>> {
+    let np = model.params.len();
+    check_fixed_slots(model, fixed)?;
+    let Some(first) = starts.first() else {
+        return Ok(None);
+    };
+    let ctx = Ctx::new(model, data, fixed);
+    let (_, moving) = moving_coordinates(model, data, fixed);
+    let (a, t) = match model.index(name) {
+        Some(i) => {
+            if fixed[i].is_some() {
+                return Ok(None);
+            }
+            model.check_value(i, target)?;
+            let mut a = vec![0.0; np];
+            a[i] = 1.0;
+            (a, model.params[i].kind.to_coord(target))
+        }
+        None => {
+            let Some((_, _, mut grad)) = model.groups(first).into_iter().find(|g| g.0 == name)
+            else {
+                return Ok(None);
+            };
+            crate::error::check("target", target, target > 0.0, "0 < target < inf")?;
+            for (g, f) in grad.iter_mut().zip(fixed) {
+                if f.is_some() {
+                    *g = 0.0;
+                }
+            }
+            (grad, target.ln())
+        }
+    };
+    let coords: Vec<Vec<f64>> = starts
+        .iter()
+        .map(|v| {
+            let mut v = v.clone();
+            for (x, f) in v.iter_mut().zip(fixed) {
+                if let Some(f) = f {
+                    *x = *f;
+                }
+            }
+            ctx.coords(&v)
+        })
+        .collect();
+    Ok(ctx.profile_at(&a, t, &moving, &coords).map(|(s, _)| s))
 }
