@@ -456,3 +456,39 @@ fn box_set_315_p2_interval_ends_where_the_profile_crosses() {
     )
     .is_err());
 }
+
+/// Set 87 (`nu` fixed, CoR only, 5 % noise): the profile of `p2` crosses the threshold below the
+/// estimate (0.69) and then levels off towards the Kelvin limit `p2 -> 0`, about 5.3 above the
+/// minimum, where the truth 0.026 lies. An earlier fit called `p2` determined with the interval
+/// [0.22, 1.0]; the interval is kept, but the flat shoulder makes it not determined, and the
+/// profile at twice the lower end's distance indeed lies below the two-degree-of-freedom level.
+#[test]
+fn box_set_87_flat_shoulder_is_not_determined() {
+    let (r, _, _, fixed) = box_set(87);
+    let best = ssr(&r);
+    let e = r.get("p2").unwrap();
+    assert!(!e.identifiable, "{}", r.verdict);
+    assert!(
+        e.note.contains("flat beyond the interval's lower end"),
+        "{}",
+        e.note
+    );
+    let (value, (lo, _)) = (e.value.unwrap(), e.ci95.unwrap());
+    let twice = lo * (lo / value);
+    let p = fit::profile_misfit(
+        &r.model,
+        &r.data,
+        &fixed,
+        "p2",
+        twice,
+        std::slice::from_ref(&r.values),
+    )
+    .unwrap()
+    .unwrap();
+    let level = -2.0 * 0.05f64.ln();
+    assert!(
+        p - best < level && p - best > 3.84,
+        "profile at p2 = {twice}: {} above the minimum",
+        p - best
+    );
+}

@@ -79,6 +79,11 @@ pub const FIT_PROFILE_OTHERS_SSR: f64 = 3.0;
 /// of those profile minimisations, taken among the points whose quantity lies at or beyond the
 /// profile point (a basin on the far side of the interval's end).
 pub const FIT_PROFILE_BEYOND: usize = 2;
+/// `fit`: the 95 % level of the chi-square law with two degrees of freedom, `-2 ln 0.05`. An
+/// interval's end is on a flat shoulder when the profile at twice the end's distance from the
+/// estimate lies less than this level (in units of the noise variance; scaled like the threshold
+/// when the noise is estimated) above the minimum (docs/theory.md §16.1).
+pub const FIT_SHOULDER_LEVEL: f64 = 5.991_464_547_107_979;
 
 /// Absolute accuracy floor of the tangential CoR of an oblique `mdr` run: the adaptive driver
 /// accepts `v_c' / v_c` at `max(rtol, OBLIQUE_TANGENTIAL_ATOL)` (absolute; the normal CoR keeps

@@ -4,6 +4,7 @@
 
 use super::profile::End;
 use super::*;
+use crate::model::tolerances::FIT_SHOULDER_LEVEL;
 
 /// Uncertainty and identifiability at the estimate (module docs).
 pub(super) fn analyse(
@@ -423,6 +424,51 @@ pub(super) fn analyse(
                 .map(|(j, ((s, _), g))| (g[k], *s, j))
                 .collect();
             widen(e, &grad, value.ln(), &points, &f64::ln, &f64::exp);
+        }
+        // Flat shoulders (docs/theory.md §16.1): where the profile at twice an end's distance
+        // from the estimate still lies below the two-degree-of-freedom level, the profile is
+        // far flatter than the quadratic the threshold assumes (which would rise to four times
+        // the threshold there), and the likelihood-ratio statistic of a truth out on the
+        // shoulder is no longer chi-square with one degree of freedom: the interval is kept
+        // but not reported determined.
+        let level = threshold * FIT_SHOULDER_LEVEL / normal_quantile().powi(2);
+        let shoulder = |e: &mut Estimate, a: &[f64], x: f64, to_coord: &dyn Fn(f64) -> f64| {
+            let (Some((lo, hi)), true, false) = (e.ci95, e.identifiable, e.fixed) else {
+                return;
+            };
+            for (end, sign, side) in [(lo, -1.0, "lower"), (hi, 1.0, "upper")] {
+                let off = (to_coord(end) - x).abs();
+                if !(off > 0.0) {
+                    continue;
+                }
+                let at = (x, off, sign);
+                if let Some(rise) =
+                    ctx.shoulder(a, at, &coords, best_ssr, level, moving, &starts, &pool)
+                {
+                    e.identifiable = false;
+                    e.note = format!(
+                        "not determined: the profile misfit is flat beyond the interval's {side} \
+                         end (twice as far from the estimate, in the coordinate, it lies only \
+                         {rise:.2} above the minimum, below the two-degree-of-freedom level \
+                         {level:.2}): the data hardly exclude values out there"
+                    );
+                    return;
+                }
+            }
+        };
+        for &i in moving {
+            let mut a = vec![0.0; np];
+            a[i] = 1.0;
+            let kind = model.params[i].kind;
+            shoulder(&mut parameters[i], &a, coords[i], &|v| kind.to_coord(v));
+        }
+        for (e, (_, value, mut grad)) in groups.iter_mut().zip(model.groups(&values)) {
+            for (g, f) in grad.iter_mut().zip(fixed) {
+                if f.is_some() {
+                    *g = 0.0;
+                }
+            }
+            shoulder(e, &grad, value.ln(), &f64::ln);
         }
     }
     let verdict = verdict(&parameters, &groups);

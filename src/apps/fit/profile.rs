@@ -180,6 +180,31 @@ impl Ctx<'_> {
         }
     }
 
+    /// The flat shoulder test of one end of a 95 % interval of `a . c` (estimate `x` at the
+    /// coordinates `at`, misfit `best_ssr`; the end at `x + sign off`): the profile at twice the
+    /// end's distance, `x + sign 2 off`, re-minimised from `at`, `others` and the points of
+    /// `pool` beyond it. Its rise above `best_ssr` when that lies below `level` (a quadratic
+    /// profile would have risen to four times the threshold there; docs/theory.md §16.1), else
+    /// `None` (also when the minimisation fails: nothing is shown then).
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn shoulder(
+        &self,
+        a: &[f64],
+        (x, off, sign): (f64, f64, f64),
+        at: &[f64],
+        best_ssr: f64,
+        level: f64,
+        moving: &[usize],
+        others: &[Vec<f64>],
+        pool: &[(f64, Vec<f64>)],
+    ) -> Option<f64> {
+        let t = x + sign * 2.0 * off;
+        let mut starts = vec![at.to_vec()];
+        starts.extend(others_and_pool(others, pool, a, t, sign));
+        let (s, _) = self.profile_at(a, t, moving, &starts)?;
+        (s - best_ssr < level).then_some(s - best_ssr)
+    }
+
     /// The offset at which the profile of `a . c` crosses `level` between `lo` (below it) and
     /// `hi` (at or above it) from the estimate `x` on the side `sign`: [`CROSSING_BISECTIONS`]
     /// bisections, each profile point re-minimised from the last point below the level and
