@@ -528,6 +528,71 @@ mod tests {
         }
     }
 
+    /// The search of [`reduce`] (bisection per `n`, the layer cap of the fast side, the stop
+    /// once no `n` can save more) finds the groups an exhaustive search of every group size and
+    /// every `n` finds, on random series spread over 24 decades around the contact.
+    /// A bound of a group and a number of points, as [`best_group`] takes it.
+    type GroupBound<'a> = &'a dyn Fn(&[(f64, f64)], usize) -> f64;
+
+    #[test]
+    fn group_search_matches_exhaustive_search() {
+        // the largest saving over every n and every group size within the limit (ties: the
+        // smallest n, as in best_group)
+        let exhaustive =
+            |sorted: &[(f64, f64)], avail: usize, slow: bool, limit: f64, bound: GroupBound| {
+                let nn = sorted.len();
+                let mut best: (usize, usize) = (0, 0);
+                for n in 1..=REDUCE_MAX_POINTS {
+                    for m in n + 1..=avail {
+                        let g = if slow {
+                            &sorted[nn - m..]
+                        } else {
+                            &sorted[..m]
+                        };
+                        if bound(g, n) <= limit && m - n > best.0.saturating_sub(best.1) {
+                            best = (m, n);
+                        }
+                    }
+                }
+                best
+            };
+        let mut rng = crate::rng::SplitMix64::new(3);
+        let mut merged = 0;
+        for case in 0..200 {
+            let n = 3 + case % 40;
+            let mut live: Vec<(f64, f64)> = (0..n)
+                .map(|_| {
+                    let c = 10f64.powf(-1.0 + 7.0 * rng.uniform());
+                    (c, 10f64.powf(-12.0 + 24.0 * rng.uniform()))
+                })
+                .collect();
+            live.sort_by(|a, b| a.1.total_cmp(&b.1));
+            let t = contact_time_estimate(1.0, &live);
+            let (t_slow, t_fast, e) = (2.0 * t, 0.5 * t, 0.5);
+            let g_t = modulus_at(1.0, &live, t_slow);
+            for budget in [1e-3, 1e-7, 1e-11] {
+                let limit = 0.5 * budget;
+                let slow = |g: &[(f64, f64)], p: usize| slow_bound(g, p, t_slow, e, g_t);
+                let fast = |g: &[(f64, f64)], p: usize| fast_bound(g, p, t_fast, e, g_t);
+                let s = best_group(&live, n, n, true, limit, slow);
+                assert_eq!(s, exhaustive(&live, n, true, limit, &slow), "case {case}");
+                let cap = (0..=n)
+                    .take_while(|&m| m == 0 || fast_layer(&live[..m], t_fast, e) <= limit)
+                    .last()
+                    .unwrap_or(0);
+                let f = best_group(&live, n - s.0, cap, false, limit, fast);
+                assert_eq!(
+                    f,
+                    exhaustive(&live, n - s.0, false, limit, &fast),
+                    "case {case}"
+                );
+                merged += usize::from(s.0 > 0) + usize::from(f.0 > 0);
+            }
+        }
+        // the cases exercise both sides
+        assert!(merged > 100, "{merged}");
+    }
+
     #[test]
     fn two_terms_are_never_reduced() {
         assert!(reduce(1.0, &[(1.0, 1e-12), (2.0, 1e12)], (3.0, 3.0), 0.5, 1e-2).is_none());
