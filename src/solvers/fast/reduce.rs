@@ -107,7 +107,10 @@ type Recurrence = ([f64; REDUCE_MAX_POINTS], [f64; REDUCE_MAX_POINTS]);
 /// the total weight) of its monic orthogonal polynomials and `‖π_n‖² = ∫ π_n² dμ`, the
 /// constant of the `n`-point Gauss rule's error (docs/theory.md §9.7). The measure is scaled to
 /// total weight 1 and largest point 1 for the recurrence. No allocation: the bisections of
-/// [`best_group`] call it for every trial group.
+/// [`best_group`] call it for every trial group. Each pass evaluates `π_j(x_k)` again by the
+/// recurrence from the coefficients found so far (`n <= 4`: at most 10 recurrence steps per
+/// point) instead of keeping `π_j` and `π_(j-1)` in two more buffers of the largest measure's
+/// size, whose zeroing cost more (the same operations in the same order, so the same bits).
 fn stieltjes(
     len: usize,
     x: impl Fn(usize) -> f64,
@@ -129,32 +132,37 @@ fn stieltjes(
         xs[k] /= xscale;
         ws[k] /= wscale;
     }
-    let (xs, ws) = (&xs[..len], &ws[..len]);
-    let mut p_prev = [0.0; MAX_MEASURE];
-    let mut p = [0.0; MAX_MEASURE];
-    p[..len].fill(1.0);
+    // the scaled recurrence coefficients (the returned ones are unscaled)
+    let (mut a_s, mut b_s) = ([0.0; REDUCE_MAX_POINTS], [0.0; REDUCE_MAX_POINTS]);
+    // `π_j` of the scaled measure at the scaled point `xk` (the same operations, in the same
+    // order, as a recurrence run once over stored values)
+    let pi = |xk: f64, j: usize, a_s: &[f64; REDUCE_MAX_POINTS], b_s: &[f64; REDUCE_MAX_POINTS]| {
+        let (mut p_prev, mut p) = (0.0, 1.0);
+        for i in 0..j {
+            let next = (xk - a_s[i]) * p - if i == 0 { 0.0 } else { b_s[i] * p_prev };
+            p_prev = p;
+            p = next;
+        }
+        p
+    };
     let (mut alpha, mut beta) = ([0.0; REDUCE_MAX_POINTS], [0.0; REDUCE_MAX_POINTS]);
     let mut norm_prev = 1.0;
     for j in 0..=n {
-        let norm: f64 = ws.iter().zip(&p).map(|(w, p)| w * p * p).sum();
+        let (mut norm, mut first) = (0.0, 0.0);
+        for (&xk, &wk) in xs[..len].iter().zip(&ws[..len]) {
+            let p = pi(xk, j, &a_s, &b_s);
+            norm += wk * p * p;
+            first += wk * xk * p * p;
+        }
         if j == n {
             return ((alpha, beta), norm * wscale * xscale.powi(2 * n as i32));
         }
-        let a = ws
-            .iter()
-            .zip(&p)
-            .zip(xs)
-            .map(|((w, p), x)| w * x * p * p)
-            .sum::<f64>()
-            / norm;
+        let a = first / norm;
         let b = if j == 0 { 1.0 } else { norm / norm_prev };
+        a_s[j] = a;
+        b_s[j] = b;
         alpha[j] = a * xscale;
         beta[j] = b * if j == 0 { wscale } else { xscale * xscale };
-        for k in 0..len {
-            let next = (xs[k] - a) * p[k] - if j == 0 { 0.0 } else { b * p_prev[k] };
-            p_prev[k] = p[k];
-            p[k] = next;
-        }
         norm_prev = norm;
     }
     unreachable!("the loop returns at j = n")
@@ -223,11 +231,17 @@ fn fast_bound(fast: &[(f64, f64)], n: usize, t: f64, e: f64, g_t: f64) -> f64 {
     let tf = 0.25 * t;
     let (_, norm) = stieltjes(fast.len(), |k| fast[k].1, |k| fast[k].0 * fast[k].1, n);
     let moments = factorial(2 * n + 1) * norm / (tf.powi(2 * n as i32 + 1) * g_t * e * e);
+    moments + fast_layer(fast, t, e)
+}
+
+/// The initial layers' part of [`fast_bound`] (module docs): at most the whole bound, and
+/// growing with the group.
+fn fast_layer(fast: &[(f64, f64)], t: f64, e: f64) -> f64 {
     let layer: f64 = fast
         .iter()
         .map(|(c, tau)| c * tau.powi(3) * tau.sqrt())
         .sum::<f64>();
-    moments + LAYER_FACTOR * K16 * layer / (t * e * e)
+    LAYER_FACTOR * K16 * layer / (t * e * e)
 }
 
 /// Factor of the initial layers' share of the fast bound (module docs).
@@ -269,15 +283,19 @@ pub(super) fn contact_time_estimate(c_inf: f64, live: &[(f64, f64)]) -> f64 {
 /// the fast side) that saves the most terms among the rules of 1 to [`REDUCE_MAX_POINTS`]
 /// points whose `bound(group, n)` is at most `limit`, at most `avail` terms: `(m, n)`, or
 /// `(0, 0)` when no group of more than `n` terms fits. The bound grows with the group (the
-/// norm of a Gauss rule's error grows with the measure), so each `n` is a binary search.
+/// norm of a Gauss rule's error grows with the measure), so each `n` is a binary search; no
+/// group larger than `cap` is tried (a necessary condition of the caller's bound fails
+/// there), and no `n` that could not save more terms than the best so far.
 fn best_group(
     sorted: &[(f64, f64)],
     avail: usize,
+    cap: usize,
     slow: bool,
     limit: f64,
     bound: impl Fn(&[(f64, f64)], usize) -> f64,
 ) -> (usize, usize) {
     let nn = sorted.len();
+    let avail = avail.min(cap);
     let group = |m: usize| {
         if slow {
             &sorted[nn - m..]
@@ -287,7 +305,11 @@ fn best_group(
     };
     let mut best: (usize, usize) = (0, 0);
     for n in 1..=REDUCE_MAX_POINTS {
-        if avail <= n || bound(group(n + 1), n) > limit {
+        // a rule of n points saves at most avail - n terms (fewer for larger n)
+        if avail <= n || avail - n <= best.0.saturating_sub(best.1) {
+            break;
+        }
+        if bound(group(n + 1), n) > limit {
             continue;
         }
         // largest m in [n + 1, avail] within the limit
@@ -322,12 +344,26 @@ pub(super) fn reduce(
     sorted.sort_by(|a, b| a.1.total_cmp(&b.1));
     let g_t = modulus_at(c_inf, live, t_slow);
     let n = sorted.len();
-    let (mut n_slow, mut p_slow) = best_group(&sorted, n, true, 0.5 * budget, |g, p| {
+    let (mut n_slow, mut p_slow) = best_group(&sorted, n, n, true, 0.5 * budget, |g, p| {
         slow_bound(g, p, t_slow, e, g_t)
     });
-    let (mut n_fast, mut p_fast) = best_group(&sorted, n - n_slow, false, 0.5 * budget, |g, p| {
-        fast_bound(g, p, t_fast, e, g_t)
-    });
+    // the fast bound is at least its layer part, which grows with the group: no larger group
+    // than the one whose layer part alone is within the limit can fit
+    let layer_cap = {
+        let mut m = 0;
+        while m < n && fast_layer(&sorted[..m + 1], t_fast, e) <= 0.5 * budget {
+            m += 1;
+        }
+        m
+    };
+    let (mut n_fast, mut p_fast) = best_group(
+        &sorted,
+        n - n_slow,
+        layer_cap,
+        false,
+        0.5 * budget,
+        |g, p| fast_bound(g, p, t_fast, e, g_t),
+    );
     let fast = sorted[..n_fast].to_vec();
     let slow = sorted[n - n_slow..].to_vec();
     let mut terms: Vec<(f64, f64)> = sorted[n_fast..n - n_slow].to_vec();
@@ -490,6 +526,71 @@ mod tests {
             let m = |g: &[(f64, f64)]| g.iter().map(|(c, tau)| c * tau.powi(j)).sum::<f64>();
             assert!((m(&fast_rule) - m(&r.fast)).abs() <= 1e-9 * m(&r.fast));
         }
+    }
+
+    /// The search of [`reduce`] (bisection per `n`, the layer cap of the fast side, the stop
+    /// once no `n` can save more) finds the groups an exhaustive search of every group size and
+    /// every `n` finds, on random series spread over 24 decades around the contact.
+    /// A bound of a group and a number of points, as [`best_group`] takes it.
+    type GroupBound<'a> = &'a dyn Fn(&[(f64, f64)], usize) -> f64;
+
+    #[test]
+    fn group_search_matches_exhaustive_search() {
+        // the largest saving over every n and every group size within the limit (ties: the
+        // smallest n, as in best_group)
+        let exhaustive =
+            |sorted: &[(f64, f64)], avail: usize, slow: bool, limit: f64, bound: GroupBound| {
+                let nn = sorted.len();
+                let mut best: (usize, usize) = (0, 0);
+                for n in 1..=REDUCE_MAX_POINTS {
+                    for m in n + 1..=avail {
+                        let g = if slow {
+                            &sorted[nn - m..]
+                        } else {
+                            &sorted[..m]
+                        };
+                        if bound(g, n) <= limit && m - n > best.0.saturating_sub(best.1) {
+                            best = (m, n);
+                        }
+                    }
+                }
+                best
+            };
+        let mut rng = crate::rng::SplitMix64::new(3);
+        let mut merged = 0;
+        for case in 0..200 {
+            let n = 3 + case % 40;
+            let mut live: Vec<(f64, f64)> = (0..n)
+                .map(|_| {
+                    let c = 10f64.powf(-1.0 + 7.0 * rng.uniform());
+                    (c, 10f64.powf(-12.0 + 24.0 * rng.uniform()))
+                })
+                .collect();
+            live.sort_by(|a, b| a.1.total_cmp(&b.1));
+            let t = contact_time_estimate(1.0, &live);
+            let (t_slow, t_fast, e) = (2.0 * t, 0.5 * t, 0.5);
+            let g_t = modulus_at(1.0, &live, t_slow);
+            for budget in [1e-3, 1e-7, 1e-11] {
+                let limit = 0.5 * budget;
+                let slow = |g: &[(f64, f64)], p: usize| slow_bound(g, p, t_slow, e, g_t);
+                let fast = |g: &[(f64, f64)], p: usize| fast_bound(g, p, t_fast, e, g_t);
+                let s = best_group(&live, n, n, true, limit, slow);
+                assert_eq!(s, exhaustive(&live, n, true, limit, &slow), "case {case}");
+                let cap = (0..=n)
+                    .take_while(|&m| m == 0 || fast_layer(&live[..m], t_fast, e) <= limit)
+                    .last()
+                    .unwrap_or(0);
+                let f = best_group(&live, n - s.0, cap, false, limit, fast);
+                assert_eq!(
+                    f,
+                    exhaustive(&live, n - s.0, false, limit, &fast),
+                    "case {case}"
+                );
+                merged += usize::from(s.0 > 0) + usize::from(f.0 > 0);
+            }
+        }
+        // the cases exercise both sides
+        assert!(merged > 100, "{merged}");
     }
 
     #[test]
