@@ -34,7 +34,7 @@
 //! 1. its direction has no component above [`FIT_NULL_COMPONENT`] in the null space (else its
 //!    value is not reported: `null`),
 //! 2. the noise scale is known (every `*_sd` given) or there are residual degrees of freedom to
-//!    estimate it (`s^2 = SSR / (n - rank)`), and
+//!    estimate it (`s^2 = SSR / (n - rank)`),
 //! 3. its 95 % interval is bounded: the Wald interval when it reaches at most
 //!    [`FIT_MAX_HALF_WIDTH`] (a factor of 10 for a modulus) from the estimate in its coordinate
 //!    and the profile misfit at each end and 1.5 half-widths out lies at or above the threshold
@@ -45,6 +45,10 @@
 //!    value is reported with `identifiable: false` and no interval). A group whose Wald interval
 //!    is too wide is reported `identifiable: false` with that interval; a group whose Wald
 //!    interval is narrow enough has its ends checked against its profile like a parameter.
+//! 4. neither end of its interval lies on a flat shoulder of the profile: at twice an end's
+//!    distance from the estimate the profile lies at least [`FIT_SHOULDER_LEVEL`] (scaled like
+//!    the threshold when the noise is estimated) above the minimum (else the interval is kept
+//!    and the quantity reported `identifiable: false`; docs/theory.md §16.1).
 //!
 //! The Wald interval is `a x ± q sqrt(s^2 a^T V S^-2 V^T a)` (range of `V` only), mapped back
 //! to the parameter (`exp`, logistic), with `q` the normal quantile when the noise is known and
@@ -62,6 +66,7 @@
 //! [`FIT_MAX_HALF_WIDTH`]: crate::model::tolerances::FIT_MAX_HALF_WIDTH
 //! [`FIT_PROFILE_STEP`]: crate::model::tolerances::FIT_PROFILE_STEP
 //! [`FIT_PROFILE_STEPS`]: crate::model::tolerances::FIT_PROFILE_STEPS
+//! [`FIT_SHOULDER_LEVEL`]: crate::model::tolerances::FIT_SHOULDER_LEVEL
 
 mod analysis;
 pub mod checks;
