@@ -151,7 +151,9 @@ def test_first_failing_solve_is_named_across_chunks():
 def test_keyboard_interrupt_ends_a_long_call():
     import _thread
 
-    p3 = np.logspace(-2, 3, 40000)
+    # about 5 s of work uninterrupted (1 s was once too short on a loaded machine: the timer
+    # thread fired only after the call had returned), so the interrupt lands inside the call
+    p3 = np.logspace(-2, 3, 200000)
     timer = threading.Timer(0.05, _thread.interrupt_main)
     timer.start()
     try:
