@@ -150,10 +150,13 @@ def test_first_failing_solve_is_named_across_chunks():
 
 def test_keyboard_interrupt_ends_a_long_call():
     import _thread
+    import signal
 
-    # about 5 s of work uninterrupted (1 s was once too short on a loaded machine: the timer
-    # thread fired only after the call had returned), so the interrupt lands inside the call
-    p3 = np.logspace(-2, 3, 200000)
+    # A process started in the background by a shell without job control inherits SIGINT
+    # ignored, and Python then keeps it ignored, so that interrupt_main() would do nothing:
+    # install Python's own handler for the test, as an interactive session has it.
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    p3 = np.logspace(-2, 3, 40000)
     timer = threading.Timer(0.05, _thread.interrupt_main)
     timer.start()
     try:
@@ -161,6 +164,7 @@ def test_keyboard_interrupt_ends_a_long_call():
             mi.cor(0.45, 0.01, p3, rtol=1e-8)
     finally:
         timer.cancel()
+        signal.signal(signal.SIGINT, previous)
 
 
 def test_cor_accepts_misaligned_and_read_only_arrays():
