@@ -168,13 +168,18 @@ pub(super) fn analyse(
             },
         }
     };
+    // the direction of parameter `i` in the coordinates
+    let unit_direction = |i: usize| {
+        let mut a = vec![0.0; np];
+        a[i] = 1.0;
+        a
+    };
     let parameters: Vec<Estimate> = model
         .params
         .iter()
         .enumerate()
         .map(|(i, p)| {
-            let mut a = vec![0.0; np];
-            a[i] = 1.0;
+            let a = unit_direction(i);
             estimate(
                 p.name.clone(),
                 p.unit,
@@ -185,22 +190,29 @@ pub(super) fn analyse(
             )
         })
         .collect();
-    let groups: Vec<Estimate> = model
+    // every group with its value and its direction in the coordinates: the Poisson coordinate
+    // does not enter; fixed coordinates do not vary
+    let group_dirs: Vec<(&'static str, f64, Vec<f64>)> = model
         .groups(&values)
         .into_iter()
         .map(|(name, value, mut grad)| {
-            // coordinates: the Poisson coordinate does not enter; fixed ones do not vary
             for (g, f) in grad.iter_mut().zip(fixed) {
                 if f.is_some() {
                     *g = 0.0;
                 }
             }
+            (name, value, grad)
+        })
+        .collect();
+    let groups: Vec<Estimate> = group_dirs
+        .iter()
+        .map(|&(name, value, ref grad)| {
             let all_fixed = grad.iter().all(|g| *g == 0.0);
             let unit = if name == "p2" { "1" } else { "Pa^(2/5) s" };
             estimate(
                 name.to_string(),
                 unit,
-                &grad,
+                grad,
                 value.ln(),
                 &f64::exp,
                 all_fixed,
@@ -259,18 +271,12 @@ pub(super) fn analyse(
             }
         };
         for &i in moving {
-            let mut a = vec![0.0; np];
-            a[i] = 1.0;
+            let a = unit_direction(i);
             let kind = model.params[i].kind;
             check(&mut parameters[i], &a, coords[i], &|c| kind.from_coord(c));
         }
-        for (e, (_, value, mut grad)) in groups.iter_mut().zip(model.groups(&values)) {
-            for (g, f) in grad.iter_mut().zip(fixed) {
-                if f.is_some() {
-                    *g = 0.0;
-                }
-            }
-            check(e, &grad, value.ln(), &f64::exp);
+        for (e, (_, value, grad)) in groups.iter_mut().zip(&group_dirs) {
+            check(e, grad, value.ln(), &f64::exp);
         }
         // the profile likelihood where the Wald interval is too wide to trust
         for &i in moving {
@@ -398,8 +404,7 @@ pub(super) fn analyse(
                 .enumerate()
                 .map(|(k, (s, v))| (v[i], *s, k))
                 .collect();
-            let mut a = vec![0.0; np];
-            a[i] = 1.0;
+            let a = unit_direction(i);
             let kind = p.kind;
             widen(e, &a, coords[i], &points, &|x| kind.to_coord(x), &|c| {
                 kind.from_coord(c)
@@ -409,21 +414,14 @@ pub(super) fn analyse(
             .iter()
             .map(|(_, v)| model.groups(v).into_iter().map(|(_, g, _)| g).collect())
             .collect();
-        for (k, (e, (_, value, mut grad))) in
-            groups.iter_mut().zip(model.groups(&values)).enumerate()
-        {
-            for (g, f) in grad.iter_mut().zip(fixed) {
-                if f.is_some() {
-                    *g = 0.0;
-                }
-            }
+        for (k, (e, (_, value, grad))) in groups.iter_mut().zip(&group_dirs).enumerate() {
             let points: Vec<(f64, f64, usize)> = within
                 .iter()
                 .zip(&group_values)
                 .enumerate()
                 .map(|(j, ((s, _), g))| (g[k], *s, j))
                 .collect();
-            widen(e, &grad, value.ln(), &points, &f64::ln, &f64::exp);
+            widen(e, grad, value.ln(), &points, &f64::ln, &f64::exp);
         }
         // Flat shoulders (docs/theory.md §16.1): where the profile at twice an end's distance
         // from the estimate still lies below the two-degree-of-freedom level, the profile is
@@ -457,18 +455,12 @@ pub(super) fn analyse(
             }
         };
         for &i in moving {
-            let mut a = vec![0.0; np];
-            a[i] = 1.0;
+            let a = unit_direction(i);
             let kind = model.params[i].kind;
             shoulder(&mut parameters[i], &a, coords[i], &|v| kind.to_coord(v));
         }
-        for (e, (_, value, mut grad)) in groups.iter_mut().zip(model.groups(&values)) {
-            for (g, f) in grad.iter_mut().zip(fixed) {
-                if f.is_some() {
-                    *g = 0.0;
-                }
-            }
-            shoulder(e, &grad, value.ln(), &f64::ln);
+        for (e, (_, value, grad)) in groups.iter_mut().zip(&group_dirs) {
+            shoulder(e, grad, value.ln(), &f64::ln);
         }
     }
     let verdict = verdict(&parameters, &groups);
