@@ -78,6 +78,7 @@ pub mod report;
 mod starts;
 pub mod study;
 pub mod study_box;
+mod study_statistic;
 
 use std::cell::{Cell, RefCell};
 

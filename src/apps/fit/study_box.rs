@@ -620,7 +620,7 @@ pub fn markdown(r: &BoxReport) -> String {
     // the intervals' promise: no truth within the threshold of the misfit is left out (every
     // set gives its standard deviations: the threshold is the normal quantile squared)
     let threshold = super::analysis::normal_quantile().powi(2);
-    s.push_str(&statistic_table(r, threshold));
+    s.push_str(&super::study_statistic::markdown(r, threshold));
     let misses: Vec<(u64, &str, f64, Option<f64>)> = r
         .outcomes
         .iter()
@@ -688,71 +688,5 @@ pub fn markdown(r: &BoxReport) -> String {
         s.push_str(&format!("; set {k}: {e}"));
     }
     s.push_str(".\n\n");
-    s
-}
-
-/// The likelihood-ratio statistic of the truth `W` (the profile misfit at the truth's value
-/// above the estimate's) against the threshold, per quantity: over every set where it was
-/// evaluated, and split by the reported status.
-fn statistic_table(r: &BoxReport, threshold: f64) -> String {
-    let mut s = format!(
-        "\n### The likelihood-ratio statistic at the truth\n\nPer quantity over every set where \
-         it was fitted (the moduli only with contact times, since the CoR alone leaves their \
-         common scale free): the share of sets in which the statistic of the truth, `W = \
-         S_p(truth) - SSR_fit` (`profile_misfit` from the truth and from the estimate), exceeds \
-         the threshold {threshold:.2}, with its 95 % Wilson interval; asymptotically `W` is \
-         chi-square with one degree of freedom and the share 5 %. A likelihood-ratio set holds \
-         the truth exactly when `W` is within the threshold, so the first column is the miss \
-         rate of the likelihood-ratio sets whether they close or not; the other columns split \
-         it by what `fit` reported. A higher miss rate among the determined intervals than \
-         over all sets is the effect of selecting the sets whose profile closes \
-         (docs/theory.md §16.1).\n\n| quantity | all sets: W > {threshold:.2} [95 % Wilson] | \
-         determined | conditional on nu | not determined |\n| --- | --- | --- | --- | --- |\n"
-    );
-    let share = |k: usize, n: usize| {
-        if n == 0 {
-            "-".to_string()
-        } else {
-            format!("{k}/{n} = {:.1} %", 100.0 * k as f64 / n as f64)
-        }
-    };
-    for (q, name) in QUANTITIES.iter().enumerate() {
-        // (status class, W above the threshold) of every set where W was evaluated
-        let w: Vec<(usize, bool)> = r
-            .outcomes
-            .iter()
-            .filter_map(|o| {
-                let wq = o.profile_excess.get(q).copied().flatten()?;
-                let class = match o.status.get(q).copied().flatten()? {
-                    Status::Determined(_) => 0,
-                    Status::Conditional(_) => 1,
-                    Status::NotDetermined => 2,
-                };
-                Some((class, wq > threshold))
-            })
-            .collect();
-        let count = |class: Option<usize>| {
-            let v: Vec<bool> = w
-                .iter()
-                .filter(|(c, _)| class.is_none_or(|k| *c == k))
-                .map(|x| x.1)
-                .collect();
-            (v.iter().filter(|b| **b).count(), v.len())
-        };
-        let (k, n) = count(None);
-        let (lo, hi) = wilson(k, n);
-        let all = if n == 0 {
-            "-".to_string()
-        } else {
-            format!("{} [{:.1}, {:.1}]", share(k, n), 100.0 * lo, 100.0 * hi)
-        };
-        let (d, c, u) = (count(Some(0)), count(Some(1)), count(Some(2)));
-        s.push_str(&format!(
-            "| {name} | {all} | {} | {} | {} |\n",
-            share(d.0, d.1),
-            share(c.0, c.1),
-            share(u.0, u.1)
-        ));
-    }
     s
 }
