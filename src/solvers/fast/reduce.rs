@@ -307,19 +307,16 @@ pub(super) fn contact_time_estimate(c_inf: f64, live: &[(f64, f64)]) -> f64 {
 /// the fast side) that saves the most terms among the rules of 1 to [`REDUCE_MAX_POINTS`]
 /// points whose `bound(group, n)` is at most `limit`, at most `avail` terms: `(m, n)`, or
 /// `(0, 0)` when no group of more than `n` terms fits. The bound grows with the group (the
-/// norm of a Gauss rule's error grows with the measure), so each `n` is a binary search; no
-/// group larger than `cap` is tried (a necessary condition of the caller's bound fails
-/// there), and no `n` that could not save more terms than the best so far.
+/// norm of a Gauss rule's error grows with the measure), so each `n` is a binary search, and
+/// no `n` that could not save more terms than the best so far is tried.
 fn best_group(
     sorted: &[(f64, f64)],
     avail: usize,
-    cap: usize,
     slow: bool,
     limit: f64,
     bound: impl Fn(&[(f64, f64)], usize) -> f64,
 ) -> (usize, usize) {
     let nn = sorted.len();
-    let avail = avail.min(cap);
     let group = |m: usize| {
         if slow {
             &sorted[nn - m..]
@@ -368,13 +365,12 @@ pub(super) fn reduce(
     sorted.sort_by(|a, b| a.1.total_cmp(&b.1));
     let g_t = modulus_at(c_inf, live, t_slow);
     let n = sorted.len();
-    let (mut n_slow, mut p_slow) = best_group(&sorted, n, n, true, 0.5 * budget, |g, p| {
+    let (mut n_slow, mut p_slow) = best_group(&sorted, n, true, 0.5 * budget, |g, p| {
         slow_bound(g, p, t_slow, e, g_t)
     });
-    let (mut n_fast, mut p_fast) =
-        best_group(&sorted, n - n_slow, n, false, 0.5 * budget, |g, p| {
-            fast_bound(g, p, t_fast, e, g_t)
-        });
+    let (mut n_fast, mut p_fast) = best_group(&sorted, n - n_slow, false, 0.5 * budget, |g, p| {
+        fast_bound(g, p, t_fast, e, g_t)
+    });
     // the layer part needs the rule itself: checked on the group found, which shrinks until
     // the whole fast bound fits (no rule: the group is kept)
     let mut rule = Vec::new();
@@ -550,12 +546,12 @@ mod tests {
         }
     }
 
-    /// The search of [`reduce`] (bisection per `n`, the layer cap of the fast side, the stop
-    /// once no `n` can save more) finds the groups an exhaustive search of every group size and
-    /// every `n` finds, on random series spread over 24 decades around the contact.
     /// A bound of a group and a number of points, as [`best_group`] takes it.
     type GroupBound<'a> = &'a dyn Fn(&[(f64, f64)], usize) -> f64;
 
+    /// The search of [`reduce`] (bisection per `n` on the moment part, the stop once no `n`
+    /// can save more) finds the groups an exhaustive search of every group size and every `n`
+    /// finds, on random series spread over 24 decades around the contact.
     #[test]
     fn group_search_matches_exhaustive_search() {
         // the largest saving over every n and every group size within the limit (ties: the
@@ -596,9 +592,9 @@ mod tests {
                 let limit = 0.5 * budget;
                 let slow = |g: &[(f64, f64)], p: usize| slow_bound(g, p, t_slow, e, g_t);
                 let fast = |g: &[(f64, f64)], p: usize| fast_bound(g, p, t_fast, e, g_t);
-                let s = best_group(&live, n, n, true, limit, slow);
+                let s = best_group(&live, n, true, limit, slow);
                 assert_eq!(s, exhaustive(&live, n, true, limit, &slow), "case {case}");
-                let f = best_group(&live, n - s.0, n, false, limit, fast);
+                let f = best_group(&live, n - s.0, false, limit, fast);
                 assert_eq!(
                     f,
                     exhaustive(&live, n - s.0, false, limit, &fast),
