@@ -91,6 +91,21 @@ impl Cell {
     }
 }
 
+/// A set of design cells, named as in the report's tables.
+pub type Pick = fn(&Cell) -> bool;
+
+/// The design factors by which the report pools cells: each level of each factor.
+pub const FACTORS: [(&str, Pick); 8] = [
+    ("nu free", |c| c.nu_free),
+    ("nu fixed", |c| !c.nu_free),
+    ("CoR + contact time", |c| c.contact_times),
+    ("CoR only", |c| !c.contact_times),
+    ("1 % noise", |c| c.noise == BOX_NOISE[0]),
+    ("5 % noise", |c| c.noise == BOX_NOISE[1]),
+    ("nu in [0, 0.45]", |c| !c.near_half),
+    ("nu in [0.45, 0.499]", |c| c.near_half),
+];
+
 /// How one quantity of one set came out.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Status {
@@ -589,18 +604,7 @@ pub fn markdown(r: &BoxReport) -> String {
     s.push_str(" |\n| --- |");
     s.push_str(&" --- |".repeat(QUANTITIES.len()));
     s.push('\n');
-    type Pick = fn(&Cell) -> bool;
-    let factors: [(&str, Pick); 8] = [
-        ("nu free", |c| c.nu_free),
-        ("nu fixed", |c| !c.nu_free),
-        ("CoR + contact time", |c| c.contact_times),
-        ("CoR only", |c| !c.contact_times),
-        ("1 % noise", |c| c.noise == BOX_NOISE[0]),
-        ("5 % noise", |c| c.noise == BOX_NOISE[1]),
-        ("nu in [0, 0.45]", |c| !c.near_half),
-        ("nu in [0.45, 0.499]", |c| c.near_half),
-    ];
-    for (label, pick) in factors {
+    for (label, pick) in FACTORS {
         s.push_str(&format!("| {label} |"));
         for q in 0..QUANTITIES.len() {
             let ct = Counts::of(q, r.outcomes.iter().filter(|o| pick(&o.cell)));

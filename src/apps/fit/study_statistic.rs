@@ -4,7 +4,7 @@
 
 use statrs::distribution::{ChiSquared, ContinuousCDF};
 
-use super::study_box::{wilson, BoxReport, Cell, SetOutcome, Status, BOX_NOISE, QUANTITIES};
+use super::study_box::{wilson, BoxReport, Cell, Pick, SetOutcome, Status, FACTORS, QUANTITIES};
 
 /// The likelihood-ratio statistic of the truth `W` (the profile misfit at the truth's value
 /// above the estimate's) against the threshold, per quantity: over every set where it was
@@ -24,53 +24,42 @@ pub fn markdown(r: &BoxReport, threshold: f64) -> String {
          (docs/theory.md §16.1).\n\n| quantity | all sets: W > {threshold:.2} [95 % Wilson] | \
          determined | conditional on nu | not determined |\n| --- | --- | --- | --- | --- |\n"
     );
-    let share = |k: usize, n: usize| {
-        if n == 0 {
-            "-".to_string()
-        } else {
-            format!("{k}/{n} = {:.1} %", 100.0 * k as f64 / n as f64)
-        }
-    };
     for (q, name) in QUANTITIES.iter().enumerate() {
-        // (status class, W above the threshold) of every set where W was evaluated
-        let w: Vec<(usize, bool)> = r
-            .outcomes
-            .iter()
-            .filter_map(|o| {
-                let wq = o.profile_excess.get(q).copied().flatten()?;
-                let class = match o.status.get(q).copied().flatten()? {
-                    Status::Determined(_) => 0,
-                    Status::Conditional(_) => 1,
-                    Status::NotDetermined => 2,
-                };
-                Some((class, wq > threshold))
-            })
-            .collect();
-        let count = |class: Option<usize>| {
-            let v: Vec<bool> = w
-                .iter()
-                .filter(|(c, _)| class.is_none_or(|k| *c == k))
-                .map(|x| x.1)
-                .collect();
-            (v.iter().filter(|b| **b).count(), v.len())
+        let (k, n) = exceed(r, q, threshold, |_| true);
+        // the sets whose reported status is one of `keep`'s
+        let by = |keep: fn(Status) -> bool| {
+            let status = |o: &SetOutcome| o.status.get(q).copied().flatten();
+            let (k, n) = exceed(r, q, threshold, |o| status(o).is_some_and(keep));
+            share(k, n)
         };
-        let (k, n) = count(None);
-        let (lo, hi) = wilson(k, n);
-        let all = if n == 0 {
-            "-".to_string()
-        } else {
-            format!("{} [{:.1}, {:.1}]", share(k, n), 100.0 * lo, 100.0 * hi)
-        };
-        let (d, c, u) = (count(Some(0)), count(Some(1)), count(Some(2)));
         s.push_str(&format!(
-            "| {name} | {all} | {} | {} | {} |\n",
-            share(d.0, d.1),
-            share(c.0, c.1),
-            share(u.0, u.1)
+            "| {name} | {} | {} | {} | {} |\n",
+            share_wilson(k, n),
+            by(|st| matches!(st, Status::Determined(_))),
+            by(|st| matches!(st, Status::Conditional(_))),
+            by(|st| matches!(st, Status::NotDetermined))
         ));
     }
     s.push_str(&by_cell(r, threshold));
     s
+}
+
+/// `k/n = x %`, or `-` when `n` is 0.
+fn share(k: usize, n: usize) -> String {
+    if n == 0 {
+        "-".to_string()
+    } else {
+        format!("{k}/{n} = {:.1} %", 100.0 * k as f64 / n as f64)
+    }
+}
+
+/// [`share`] with its 95 % Wilson interval, `k/n = x % [lo, hi]`.
+fn share_wilson(k: usize, n: usize) -> String {
+    if n == 0 {
+        return share(k, n);
+    }
+    let (lo, hi) = wilson(k, n);
+    format!("{} [{:.1}, {:.1}]", share(k, n), 100.0 * lo, 100.0 * hi)
 }
 
 /// `(k, n)`: of the `n` sets picked in which the statistic of quantity `q` was evaluated, the
@@ -101,8 +90,9 @@ fn dof(c: &Cell) -> usize {
 /// whatever `fit` reported: a share well above 5 % in one cell is the statistic's own law
 /// departing from chi-square there, which no selection of the reported sets explains.
 fn by_cell(r: &BoxReport, threshold: f64) -> String {
-    type Pick = fn(&Cell) -> bool;
-    let rows: [(&str, Pick); 8] = [
+    // the four combinations of the two factors that set the fit's dimension, then the levels
+    // of the other two factors (noise, nu range: the last four of `FACTORS`)
+    let combinations: [(&str, Pick); 4] = [
         ("nu free, CoR + contact time", |c| {
             c.nu_free && c.contact_times
         }),
@@ -111,10 +101,6 @@ fn by_cell(r: &BoxReport, threshold: f64) -> String {
             !c.nu_free && c.contact_times
         }),
         ("nu fixed, CoR only", |c| !c.nu_free && !c.contact_times),
-        ("1 % noise", |c| c.noise == BOX_NOISE[0]),
-        ("5 % noise", |c| c.noise == BOX_NOISE[1]),
-        ("nu in [0, 0.45]", |c| !c.near_half),
-        ("nu in [0.45, 0.499]", |c| c.near_half),
     ];
     // Wilks' statistic of all parameters at once (it needs no profile)
     let wilks = |c: &Cell| ChiSquared::new(dof(c) as f64).map_or(f64::NAN, |d| d.inverse_cdf(0.95));
@@ -134,25 +120,16 @@ fn by_cell(r: &BoxReport, threshold: f64) -> String {
         QUANTITIES.join(" | "),
         " --- |".repeat(QUANTITIES.len() + 1)
     );
-    for (label, pick) in rows {
+    for (label, pick) in combinations.into_iter().chain(FACTORS[4..].iter().copied()) {
         s.push_str(&format!("| {label} |"));
         for (q, name) in QUANTITIES.iter().enumerate() {
             let (k, n) = exceed(r, q, threshold, |o| pick(&o.cell));
-            if n == 0 {
-                s.push_str(" - |");
-                continue;
-            }
-            let pct = 100.0 * k as f64 / n as f64;
-            if *name == "p2" {
-                let (lo, hi) = wilson(k, n);
-                s.push_str(&format!(
-                    " {k}/{n} = {pct:.1} % [{:.1}, {:.1}] |",
-                    100.0 * lo,
-                    100.0 * hi
-                ));
+            let entry = if *name == "p2" {
+                share_wilson(k, n)
             } else {
-                s.push_str(&format!(" {k}/{n} = {pct:.1} % |"));
-            }
+                share(k, n)
+            };
+            s.push_str(&format!(" {entry} |"));
         }
         let sets: Vec<&SetOutcome> = r.outcomes.iter().filter(|o| pick(&o.cell)).collect();
         if sets.is_empty() {
@@ -168,13 +145,9 @@ fn by_cell(r: &BoxReport, threshold: f64) -> String {
             .map(|o| (o.ssr.1 - o.ssr.0) / dof(&o.cell) as f64)
             .sum::<f64>()
             / sets.len() as f64;
-        let (lo, hi) = wilson(above, sets.len());
         s.push_str(&format!(
-            " {above}/{} = {:.1} % [{:.1}, {:.1}], {per_dof:.2} |\n",
-            sets.len(),
-            100.0 * above as f64 / sets.len() as f64,
-            100.0 * lo,
-            100.0 * hi
+            " {}, {per_dof:.2} |\n",
+            share_wilson(above, sets.len())
         ));
     }
     s
