@@ -451,3 +451,70 @@ fn csv_reader_line_list_format() {
         "1, 3, 5-8, 10, 11"
     );
 }
+
+/// The data lines are parsed in parallel: with several bad lines in a long file the error still
+/// names the first in file order, and every good row keeps its line and order.
+#[test]
+fn csv_reader_names_the_first_bad_line_of_a_long_file() {
+    let mut text = String::from("nu,p2,p3\n");
+    for i in 0..20_000 {
+        match i {
+            12_345 => text.push_str("0.3,abc,1\n"),
+            15_000 => text.push_str("0.3,1\n"),
+            17_000 => text.push_str("2,1,1\n"),
+            _ => text.push_str(&format!("0.3,{},1\n", 1 + i)),
+        }
+    }
+    match parse_rows("long.csv", text.as_bytes()) {
+        Err(Error::Csv { line, message, .. }) => {
+            assert_eq!(line, 12_347, "{message}");
+            assert!(message.contains("p2 = 'abc' is not a number"), "{message}");
+        }
+        other => panic!("expected the error of line 12347, got {other:?}"),
+    }
+    let good: String = text
+        .lines()
+        .enumerate()
+        .filter(|(i, _)| ![12_346, 15_001, 17_001].contains(i))
+        .map(|(_, l)| format!("{l}\n"))
+        .collect();
+    let rows = parse_rows("long.csv", good.as_bytes()).unwrap();
+    assert_eq!(rows.rows.len(), 19_997);
+    for (k, r) in rows.rows.iter().enumerate() {
+        assert_eq!(r.line, k as u64 + 2);
+        assert_eq!(r.text[1].parse::<u64>().unwrap() as f64, r.groups.p2);
+    }
+    assert!(rows.rows.windows(2).all(|w| w[0].groups.p2 < w[1].groups.p2));
+}
+
+/// `write_results` formats chunks of rows in parallel: its bytes are those of one CSV writer
+/// over every row, in input order (more rows than one chunk, elastic rows answered in closed
+/// form so that the test is quick).
+#[test]
+fn result_table_of_parallel_chunks_is_one_writer_s_table() {
+    use mdr_impact::apps::batch::{solve_rows, write_results, OUTPUT_HEADER};
+    let mut text = String::from("nu,p2,p3\n");
+    for i in 0..10_001 {
+        text.push_str(&format!("{},{},0\n", 0.5 - 1e-4 * i as f64, 1.0 + i as f64));
+    }
+    let rows = parse_rows("elastic.csv", text.as_bytes()).unwrap().rows;
+    let outcomes = solve_rows("elastic.csv", &rows, &Default::default()).unwrap();
+    let mut got = Vec::new();
+    write_results(&mut got, &rows, &outcomes).unwrap();
+    let mut one = csv::Writer::from_writer(Vec::new());
+    one.write_record(OUTPUT_HEADER).unwrap();
+    for (r, o) in rows.iter().zip(&outcomes) {
+        let f = |x: f64| format!("{x:e}");
+        one.write_record([
+            r.text[0].clone(),
+            r.text[1].clone(),
+            r.text[2].clone(),
+            f(o.cor),
+            f(o.contact_time),
+            f(o.max_indentation),
+        ])
+        .unwrap();
+    }
+    let want = one.into_inner().unwrap();
+    assert_eq!(String::from_utf8(got).unwrap(), String::from_utf8(want).unwrap());
+}

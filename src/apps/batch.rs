@@ -142,23 +142,42 @@ pub fn solve_groups(
         .collect()
 }
 
-/// Write the result table as CSV.
+/// Rows formatted per task of [`write_results`].
+const WRITE_CHUNK: usize = 4096;
+
+/// Write the result table as CSV. The rows are formatted in parallel (rayon), a chunk of
+/// [`WRITE_CHUNK`] rows per task, each by its own CSV writer without a header, and written in
+/// input order: the same bytes as one writer over all rows (formatting the numbers costs about
+/// as much as solving 100 000 elastic rows).
 pub fn write_results(w: &mut dyn Write, rows: &[Row], outcomes: &[Outcome]) -> Result<()> {
-    let mut c = csv::Writer::from_writer(w);
     let io = |e: csv::Error| Error::io("<stdout>", e);
+    let chunks: Vec<Vec<u8>> = rows
+        .par_chunks(WRITE_CHUNK)
+        .zip(outcomes.par_chunks(WRITE_CHUNK))
+        .map(|(rows, outcomes)| {
+            let mut c = csv::Writer::from_writer(Vec::with_capacity(rows.len() * 96));
+            for (r, o) in rows.iter().zip(outcomes) {
+                c.write_record([
+                    r.text[0].as_str(),
+                    r.text[1].as_str(),
+                    r.text[2].as_str(),
+                    &fmt(o.cor),
+                    &fmt(o.contact_time),
+                    &fmt(o.max_indentation),
+                ])
+                .map_err(io)?;
+            }
+            c.into_inner().map_err(|e| Error::io("<stdout>", e.into_error()))
+        })
+        .collect::<Result<_>>()?;
+    let mut c = csv::Writer::from_writer(&mut *w);
     c.write_record(OUTPUT_HEADER).map_err(io)?;
-    for (r, o) in rows.iter().zip(outcomes) {
-        c.write_record([
-            r.text[0].as_str(),
-            r.text[1].as_str(),
-            r.text[2].as_str(),
-            &fmt(o.cor),
-            &fmt(o.contact_time),
-            &fmt(o.max_indentation),
-        ])
-        .map_err(io)?;
-    }
     c.flush().map_err(|e| Error::io("<stdout>", e))?;
+    drop(c);
+    for chunk in &chunks {
+        w.write_all(chunk).map_err(|e| Error::io("<stdout>", e))?;
+    }
+    w.flush().map_err(|e| Error::io("<stdout>", e))?;
     Ok(())
 }
 

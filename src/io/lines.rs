@@ -39,7 +39,12 @@ pub struct NumericTable {
 
 /// Parse the bytes of a table named `file` (the name is only used in messages) whose header is
 /// exactly `header` (see the module docs for the rules).
-pub fn parse_numeric(file: &str, bytes: &[u8], header: &[&str]) -> Result<NumericTable> {
+pub fn parse_numeric<'a>(
+    file: &str,
+    bytes: &'a [u8],
+    header: &[&str],
+) -> Result<NumericTable> {
+    use rayon::prelude::*;
     let bad = |line: u64, message: String| Error::Csv {
         file: file.to_string(),
         line,
@@ -47,21 +52,25 @@ pub fn parse_numeric(file: &str, bytes: &[u8], header: &[&str]) -> Result<Numeri
     };
     let names = header.join(",");
     let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
-    let mut out = NumericTable::default();
-    let mut header_seen = false;
-    for (line, raw) in physical_lines(bytes) {
-        if raw.is_empty() {
-            out.skipped_blank_lines.push(line);
-            continue;
-        }
-        let text = std::str::from_utf8(raw).map_err(|e| {
+    let utf8 = |line: u64, raw: &'a [u8]| -> Result<&'a str> {
+        std::str::from_utf8(raw).map_err(|e| {
             bad(
                 line,
                 format!("not valid UTF-8 (byte {} of the line)", e.valid_up_to() + 1),
             )
-        })?;
-        let fields = split_fields(text).map_err(|m| bad(line, m))?;
-        if !header_seen {
+        })
+    };
+    let mut out = NumericTable::default();
+    let lines = physical_lines(bytes);
+    let mut data = Vec::with_capacity(lines.len());
+    let mut header_seen = false;
+    for (line, raw) in lines {
+        if raw.is_empty() {
+            out.skipped_blank_lines.push(line);
+        } else if header_seen {
+            data.push((line, raw));
+        } else {
+            let fields = split_fields(utf8(line, raw)?).map_err(|m| bad(line, m))?;
             if fields != header {
                 return Err(bad(
                     line,
@@ -72,8 +81,18 @@ pub fn parse_numeric(file: &str, bytes: &[u8], header: &[&str]) -> Result<Numeri
                 ));
             }
             header_seen = true;
-            continue;
         }
+    }
+    if !header_seen {
+        return Err(bad(
+            1,
+            format!("no header: expected '{names}' (the file is empty)"),
+        ));
+    }
+    // the data lines in parallel; the first bad line in file order is the error
+    let row = |&(line, raw): &(u64, &'a [u8])| -> Result<NumericRow> {
+        let text = utf8(line, raw)?;
+        let fields = split_fields(text).map_err(|m| bad(line, m))?;
         if text.trim().is_empty() {
             return Err(bad(
                 line,
@@ -110,18 +129,14 @@ pub fn parse_numeric(file: &str, bytes: &[u8], header: &[&str]) -> Result<Numeri
             }
             values.push(x);
         }
-        out.rows.push(NumericRow {
+        Ok(NumericRow {
             line,
             fields,
             values,
-        });
-    }
-    if !header_seen {
-        return Err(bad(
-            1,
-            format!("no header: expected '{names}' (the file is empty)"),
-        ));
-    }
+        })
+    };
+    let rows: Vec<Result<NumericRow>> = data.par_iter().map(row).collect();
+    out.rows = rows.into_iter().collect::<Result<_>>()?;
     Ok(out)
 }
 
