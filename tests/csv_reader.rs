@@ -484,7 +484,10 @@ fn csv_reader_names_the_first_bad_line_of_a_long_file() {
         assert_eq!(r.line, k as u64 + 2);
         assert_eq!(r.text[1].parse::<u64>().unwrap() as f64, r.groups.p2);
     }
-    assert!(rows.rows.windows(2).all(|w| w[0].groups.p2 < w[1].groups.p2));
+    assert!(rows
+        .rows
+        .windows(2)
+        .all(|w| w[0].groups.p2 < w[1].groups.p2));
 }
 
 /// `write_results` formats chunks of rows in parallel: its bytes are those of one CSV writer
@@ -516,5 +519,8 @@ fn result_table_of_parallel_chunks_is_one_writer_s_table() {
         .unwrap();
     }
     let want = one.into_inner().unwrap();
-    assert_eq!(String::from_utf8(got).unwrap(), String::from_utf8(want).unwrap());
+    assert_eq!(
+        String::from_utf8(got).unwrap(),
+        String::from_utf8(want).unwrap()
+    );
 }

@@ -167,7 +167,8 @@ pub fn write_results(w: &mut dyn Write, rows: &[Row], outcomes: &[Outcome]) -> R
                 ])
                 .map_err(io)?;
             }
-            c.into_inner().map_err(|e| Error::io("<stdout>", e.into_error()))
+            c.into_inner()
+                .map_err(|e| Error::io("<stdout>", e.into_error()))
         })
         .collect::<Result<_>>()?;
     let mut c = csv::Writer::from_writer(&mut *w);

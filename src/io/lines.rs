@@ -39,11 +39,7 @@ pub struct NumericTable {
 
 /// Parse the bytes of a table named `file` (the name is only used in messages) whose header is
 /// exactly `header` (see the module docs for the rules).
-pub fn parse_numeric<'a>(
-    file: &str,
-    bytes: &'a [u8],
-    header: &[&str],
-) -> Result<NumericTable> {
+pub fn parse_numeric<'a>(file: &str, bytes: &'a [u8], header: &[&str]) -> Result<NumericTable> {
     use rayon::prelude::*;
     let bad = |line: u64, message: String| Error::Csv {
         file: file.to_string(),
