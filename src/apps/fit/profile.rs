@@ -32,7 +32,9 @@ impl Tie {
             .iter()
             .zip(c.iter())
             .enumerate()
-            .filter(|(i, _)| *i != self.pivot)
+            // a coordinate outside the constraint (a zero coefficient) can be infinite: nu
+            // fixed at 0.5 has the coordinate +inf, and 0 * inf would poison the sum
+            .filter(|(i, (a, _))| *i != self.pivot && **a != 0.0)
             .map(|(_, (a, x))| a * x)
             .sum();
         c[self.pivot] = (self.target - rest) / self.a[self.pivot];
