@@ -65,6 +65,12 @@ pub const FIT_SCOUT_TOL: f64 = 1e-4;
 pub const FIT_SCOUT_PATIENCE: usize = 4;
 /// `fit`: Levenberg-Marquardt runs started from the best screened points.
 pub const FIT_LM_STARTS: usize = 2;
+/// `fit`: a basin scouted from a decade of the stiffness ratio is minimised fully when its
+/// scouted misfit lies within this many likelihood-ratio thresholds of the best scouted one
+/// (besides the best): a second basin within the threshold of the best minimum then reaches the
+/// intervals, which widen to it, instead of being dropped after the scout (the scouted misfit
+/// lies above the basin's minimum, hence the margin).
+pub const FIT_SCOUT_KEEP: f64 = 4.0;
 /// `fit`: step of the profile likelihood in a parameter's coordinate (a quarter decade).
 pub const FIT_PROFILE_STEP: f64 = std::f64::consts::LN_10 / 4.0;
 /// `fit`: steps of the profile likelihood on each side (four decades).

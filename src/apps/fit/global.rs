@@ -7,7 +7,7 @@ use std::cell::RefCell;
 
 use levenberg_marquardt::LevenbergMarquardt;
 
-use super::{ssr, Ctx, LmProblem, Model, ModelKind, Parameter};
+use super::{normal_quantile, ssr, t_quantile, Ctx, Data, LmProblem, Model, ModelKind, Parameter};
 use crate::error::{Error, Result};
 use crate::model::tolerances::{FIT_RTOL, FIT_SCOUT_PATIENCE, FIT_SCOUT_TOL, FIT_SCREEN_RTOL};
 
@@ -41,28 +41,28 @@ impl Ctx<'_> {
         Ok((s, values))
     }
 
-    /// The best scouted point ([`Ctx::scout`]) from the best screened point of every decade of
-    /// the stiffness ratio `p2` among `points` (sorted best first), `moving` free.
+    /// The scouted basins ([`Ctx::scout`]) from the best screened point of every decade of the
+    /// stiffness ratio `p2` among `points` (sorted best first), `moving` free: misfit and values
+    /// of each, best first.
     pub(super) fn scout_bins(
         &self,
         points: &[&Vec<f64>],
         moving: &[usize],
-    ) -> Option<(f64, Vec<f64>)> {
+    ) -> Vec<(f64, Vec<f64>)> {
         let mut bins: Vec<i64> = Vec::new();
-        let mut best: Option<(f64, Vec<f64>)> = None;
+        let mut scouted: Vec<(f64, Vec<f64>)> = Vec::new();
         for v in points {
             let bin = stiffness_ratio(self.model, v).log10().round() as i64;
             if bins.contains(&bin) {
                 continue;
             }
             bins.push(bin);
-            if let Ok(m) = self.scout(self.coords(v), moving)
-                && !best.as_ref().is_some_and(|b| b.0 <= m.0)
-            {
-                best = Some(m);
+            if let Ok(m) = self.scout(self.coords(v), moving) {
+                scouted.push(m);
             }
         }
-        best
+        scouted.sort_by(|a, b| a.0.total_cmp(&b.0));
+        scouted
     }
 }
 
@@ -73,4 +73,18 @@ pub(super) fn stiffness_ratio(model: &Model, values: &[f64]) -> f64 {
         ModelKind::Prony { n } => (1..=n).map(|i| model.get(values, Parameter::Term(i))).sum(),
     };
     model.get(values, Parameter::GInf) / relaxing
+}
+
+/// The likelihood-ratio threshold of the intervals before the fit's noise scale is known:
+/// `q²` with the normal quantile when the data carry standard deviations, else `t² s²` with
+/// `s² = ssr / (n - p)` from the misfit `ssr` of `p` moving coordinates and `n` residuals
+/// (infinite without degrees of freedom: every scouted basin is then kept).
+pub(super) fn provisional_threshold(data: &Data, ssr: f64, n: usize, p: usize) -> f64 {
+    if data.noise_known() {
+        return normal_quantile().powi(2);
+    }
+    match n.checked_sub(p).filter(|&d| d > 0) {
+        Some(dof) => t_quantile(dof).powi(2) * ssr / dof as f64,
+        None => f64::INFINITY,
+    }
 }

@@ -90,7 +90,8 @@ use crate::model::impact::Impact;
 use crate::model::tolerances::{
     FIT_FD_STEP, FIT_LM_PATIENCE, FIT_LM_STARTS, FIT_LM_TOL, FIT_MAX_HALF_WIDTH,
     FIT_NULL_COMPONENT, FIT_NULL_RATIO, FIT_PROFILE_BEYOND, FIT_PROFILE_OTHERS,
-    FIT_PROFILE_OTHERS_SSR, FIT_PROFILE_STEP, FIT_PROFILE_STEPS, FIT_RTOL, FIT_SCREEN_RTOL,
+    FIT_PROFILE_OTHERS_SSR, FIT_PROFILE_STEP, FIT_PROFILE_STEPS, FIT_RTOL, FIT_SCOUT_KEEP,
+    FIT_SCREEN_RTOL,
 };
 use crate::solvers::{solve, SolveOptions, SolverKind};
 use analysis::analyse;
@@ -627,7 +628,12 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
                     .take(FIT_LM_STARTS)
                     .map(|v| (*v).clone())
                     .collect();
-                from.extend(ctx.scout_bins(&level, &held).map(|(_, v)| v));
+                from.extend(
+                    ctx.scout_bins(&level, &held)
+                        .into_iter()
+                        .next()
+                        .map(|(_, v)| v),
+                );
                 let best_of_level = from
                     .iter()
                     .filter_map(|v| match ctx.minimise(ctx.coords(v), &held) {
@@ -648,10 +654,19 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
     }
     // Global stage: the best basin scouted from every decade of the stiffness ratio `p2`
     // starts a full minimisation too, so that a basin away from the best screened points is
-    // not missed.
+    // not missed; so does every other scouted basin within FIT_SCOUT_KEEP thresholds of it,
+    // whose minimum may lie within the threshold of the best and then widens the intervals.
     let all: Vec<&Vec<f64>> = screened.iter().map(|(_, v)| v).collect();
-    if let Some((_, v)) = ctx.scout_bins(&all, &moving) {
-        starts_from.push(v);
+    let scouted = ctx.scout_bins(&all, &moving);
+    if let Some(&(best_scout, _)) = scouted.first() {
+        let margin =
+            FIT_SCOUT_KEEP * global::provisional_threshold(data, best_scout, n, moving.len());
+        starts_from.extend(
+            scouted
+                .into_iter()
+                .filter(|(s, _)| *s - best_scout <= margin)
+                .map(|(_, v)| v),
+        );
     }
     let mut minima: Vec<(f64, Vec<f64>)> = Vec::new();
     let starts = starts_from.len();
