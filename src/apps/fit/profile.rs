@@ -152,7 +152,7 @@ impl Ctx<'_> {
             };
             if s >= level {
                 if below_seen {
-                    return End::Moved(self.bisect_crossing(
+                    let crossing = self.bisect_crossing(
                         a,
                         (x, sign),
                         (prev_off, off),
@@ -162,7 +162,15 @@ impl Ctx<'_> {
                             &warm,
                             &others_and_pool(others, pool, a, x + sign * prev_off, sign),
                         ),
-                    ));
+                    );
+                    // a crossing bracketed only by the reach itself (every bisection below the
+                    // level) is no end found within the reach: the rise there can be the box's
+                    // (a profile flat up to a factor 10, then clamped)
+                    return if crossing >= FIT_MAX_HALF_WIDTH {
+                        End::Open
+                    } else {
+                        End::Moved(crossing)
+                    };
                 }
                 if off >= BEYOND * h {
                     return End::Kept;

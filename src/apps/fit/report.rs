@@ -39,7 +39,8 @@ fn condition(r: &FitResult, e: &Estimate) -> Option<f64> {
 }
 
 /// The JSON object of `fit --json`: `parameters` and `groups` (each `{"value", "ci95",
-/// "identifiable", "fixed", "unit", "note"}`, `value`/`ci95` null when not determined),
+/// "identifiable", "fixed", "unit", "note"}`; not determined: `ci95` null unless closed on a
+/// flat shoulder, `value` the minimum's location or null along a null direction),
 /// `rms_residual`, plus `model`, `taus` (s, Prony), `k_0` (Pa, when fixed), `dof`,
 /// `noise_scale`, `singular_values`, `verdict`, `conditional_on_nu` (the `nu` every fitted
 /// modulus holds for when the data do not determine `nu`, else null; each such parameter also
