@@ -88,6 +88,16 @@ fn cor_json_and_canonical_headers() {
     assert_eq!(v["groups"]["p2"], 0.01);
     assert_eq!(v["units"], "canonical: m = R = v0 = G_inf = 1");
     assert_eq!(v["requested_solver"], "auto");
+    // the groups do not fix a_max/R (canonical units set m v0^2 / (G_inf R^3) = 1): no
+    // validity judged here, even where the canonical contact is wide (a_max/R = 0.63 at these
+    // groups, 0.32 in the default scene that has them)
+    let wide = run(
+        &["cor", "--nu", "0.49", "--p2", "0.1", "--p3", "0.3911599", "--json"],
+        dir.path(),
+    );
+    let w: serde_json::Value = serde_json::from_slice(&wide.stdout).unwrap();
+    assert!(w["validity"].is_null(), "{w}");
+    assert_eq!(w["warnings"], serde_json::json!([]));
     // the same digits as the plain command's (serde_json's own parsing may round the last bit)
     let plain = run(
         &["cor", "--nu", "0.45", "--p2", "0.01", "--p3", "1"],

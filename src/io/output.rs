@@ -516,13 +516,18 @@ fn impact_value(
 
 /// The outcome of an impact given by its dimensionless groups (`mdr-impact cor --json`) as one
 /// JSON object: `groups` (`nu`, `p2`, `p3`), `units` (`"canonical: m = R = v0 = G_inf = 1"`,
-/// the units of every dimensional number in it) and the keys of [`impact_json`] (its
-/// `warnings` without the plausibility of the inputs, meaningless in canonical units).
-/// `groups` are the groups as given (the impact's own are recomputed from its canonical
-/// moduli and may differ in the last bit).
+/// the units of every dimensional number in it) and the keys of [`impact_json`], with
+/// `validity` null and `warnings` empty: the groups fix the CoR but not the size of the contact
+/// (`a_max / R` grows as `(m v0^2 / (G_inf R^3))^(1/5)`, which the canonical units set to 1
+/// and a physical impact with the same groups need not have), and the plausibility of the
+/// inputs is meaningless in canonical units; `run` on a scene judges both. `groups` are the
+/// groups as given (the impact's own are recomputed from its canonical moduli and may differ in
+/// the last bit).
 pub fn groups_json(groups: &Groups, impact: &Impact, opts: &SolveOptions, o: &Outcome) -> String {
     let mut v = impact_value(impact, opts, o, false);
     if let Some(map) = v.as_object_mut() {
+        map.insert("validity".into(), serde_json::Value::Null);
+        map.insert("warnings".into(), serde_json::json!([]));
         let g = groups;
         map.insert(
             "groups".into(),
