@@ -44,6 +44,7 @@ fn law_rows(c: &HertzContact, a: f64, spec: &str) -> Vec<CurveRow> {
                 max_compression: 0.0,
                 contact_radius_ratio: 0.0,
                 indentation_ratio: 0.0,
+                wave_transit_ratio: None,
                 outside_validity: false,
             }
         })

@@ -37,6 +37,7 @@ fn report(geometry: Geometry) -> DemReport {
                 max_compression: 0.0,
                 contact_radius_ratio: 0.0,
                 indentation_ratio: 0.0,
+                wave_transit_ratio: None,
                 outside_validity: false,
             }
         })

@@ -107,3 +107,47 @@ fn run_prints_and_curve_tabulates_the_validity() {
             || svg.contains("outside the model's validity")
     );
 }
+
+/// With a density `curve` tabulates the wave transit ratio (the `run --json` value of every
+/// velocity) and its warning names the measure that fails: slow waves at contacts far below the
+/// paraboloid's limit, not `a_max/R`.
+#[test]
+fn curve_with_a_density_names_the_wave_transit() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("s.toml"), scene(1.0, "density = 1100.0")).unwrap();
+    let o = run(
+        &["curve", "s.toml", "--v0", "0.01:1:5", "--log"],
+        dir.path(),
+    );
+    assert!(o.status.success());
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("shear waves take up to"), "{text}");
+    assert!(!text.contains("a_max/R up to"), "{text}");
+    let csv = std::fs::read_to_string(dir.path().join("out/curve.csv")).unwrap();
+    let mut lines = csv.lines();
+    assert!(lines
+        .next()
+        .unwrap()
+        .ends_with(",contact_radius_ratio,indentation_ratio,wave_transit_ratio"));
+    for l in lines {
+        let f: Vec<&str> = l.split(',').collect();
+        std::fs::write(
+            dir.path().join("v.toml"),
+            scene(f[0].parse().unwrap(), "density = 1100.0"),
+        )
+        .unwrap();
+        let v = run_json_file(&dir, "v.toml");
+        let w: f64 = f[7].parse().unwrap();
+        assert_eq!(
+            w,
+            v["validity"]["wave_transit_ratio"].as_f64().unwrap(),
+            "{l}"
+        );
+    }
+}
+
+fn run_json_file(dir: &tempfile::TempDir, file: &str) -> serde_json::Value {
+    let o = run(&["run", file, "--json"], dir.path());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    serde_json::from_slice(&o.stdout).unwrap()
+}

@@ -257,6 +257,9 @@ class Curve:
         Maximum compression = maximum indentation (m).
     contact_radius_ratio, indentation_ratio : ndarray
         ``a_max / R`` and ``d_max / R`` at each velocity (the model's validity measures).
+    wave_transit_ratio : ndarray
+        Transit time of shear waves over the contact diameter against the contact time (the
+        quasi-static check; NaN where the scene gives no ``density``).
     outside_validity : ndarray of bool
         Where the answer carries a validity warning (``ImpactResult.warnings``): a contact too
         large for the paraboloid, or elastic waves too slow for the quasi-static model.
@@ -277,6 +280,7 @@ class Curve:
         self.max_compression = values["max_compression"]
         self.contact_radius_ratio = values["contact_radius_ratio"]
         self.indentation_ratio = values["indentation_ratio"]
+        self.wave_transit_ratio = values["wave_transit_ratio"]
         self.outside_validity = values["outside_validity"]
         self.limits = dict(values["limits"])
 

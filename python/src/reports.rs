@@ -43,6 +43,16 @@ pub(crate) fn curve_values<'py>(
         "indentation_ratio",
         array(py, col(|r| r.indentation_ratio), &shape)?,
     )?;
+    d.set_item(
+        "wave_transit_ratio",
+        array(
+            py,
+            rows.iter()
+                .map(|r| r.wave_transit_ratio.unwrap_or(f64::NAN))
+                .collect(),
+            &shape,
+        )?,
+    )?;
     let outside: Vec<bool> = rows.iter().map(|r| r.outside_validity).collect();
     d.set_item(
         "outside_validity",

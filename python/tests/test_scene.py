@@ -202,3 +202,20 @@ def test_validity_and_warnings_as_run_json():
     assert c.contact_radius_ratio.shape == (3,)
     assert list(c.outside_validity) == [False, False, True]
     assert np.all(np.diff(c.indentation_ratio) > 0)
+    assert np.all(np.isnan(c.wave_transit_ratio))
+
+
+def test_curve_wave_transit_ratio_with_a_density(tmp_path):
+    """With a density the curve carries the quasi-static measure of every velocity."""
+    path = tmp_path / "dense.toml"
+    path.write_text(
+        "[sphere]\nmass = 4.11e-3\nradius = 5.0e-3\n[impact]\nvelocity = 1.0\n"
+        "[material]\ng_inf = 1.0e6\ng_1 = 1.0e7\neta = 500.0\npoisson = 0.45\n"
+        "density = 1100.0\n"
+    )
+    scene = mi.Scene.load(str(path))
+    v = np.array([0.1, 1.0])
+    c = mi.curve(scene, v)
+    for i, v0 in enumerate(v):
+        one = scene.with_velocity(float(v0)).run(history=False)
+        assert c.wave_transit_ratio[i] == one.validity["wave_transit_ratio"]

@@ -225,6 +225,9 @@ pub struct CurveRow {
     pub contact_radius_ratio: f64,
     /// `d_max / R` ([`Validity::indentation_ratio`]).
     pub indentation_ratio: f64,
+    /// Transit time of shear waves over the contact against the contact time
+    /// ([`Validity::wave_transit_ratio`]; `None` without a density).
+    pub wave_transit_ratio: Option<f64>,
     /// Whether the answer at this velocity carries a validity warning ([`Validity`]).
     pub outside_validity: bool,
 }
@@ -241,6 +244,7 @@ impl CurveRow {
             max_compression: o.max_indentation,
             contact_radius_ratio: v.contact_radius_ratio,
             indentation_ratio: v.indentation_ratio,
+            wave_transit_ratio: v.wave_transit_ratio,
             outside_validity: !v.warnings.is_empty(),
         }
     }
@@ -385,14 +389,20 @@ pub fn run_velocities(
         .collect()
 }
 
-/// The CSV text of the rows: header [`CSV_HEADER`], full-precision SI numbers.
+/// The CSV text of the rows: header [`CSV_HEADER`], full-precision SI numbers; with a density
+/// in the scene (every row has a [`CurveRow::wave_transit_ratio`]) one more column,
+/// `wave_transit_ratio`.
 pub fn csv_text(rows: &[CurveRow]) -> String {
+    let waves = !rows.is_empty() && rows.iter().all(|r| r.wave_transit_ratio.is_some());
     let mut s = String::with_capacity(64 * (rows.len() + 1));
     s.push_str(CSV_HEADER);
+    if waves {
+        s.push_str(",wave_transit_ratio");
+    }
     s.push('\n');
     for r in rows {
         s.push_str(&format!(
-            "{},{},{},{},{},{},{}\n",
+            "{},{},{},{},{},{},{}",
             fmt(r.v0),
             fmt(r.cor),
             fmt(r.contact_time),
@@ -401,6 +411,11 @@ pub fn csv_text(rows: &[CurveRow]) -> String {
             fmt(r.contact_radius_ratio),
             fmt(r.indentation_ratio)
         ));
+        if let (true, Some(w)) = (waves, r.wave_transit_ratio) {
+            s.push(',');
+            s.push_str(&fmt(w));
+        }
+        s.push('\n');
     }
     s
 }
@@ -489,17 +504,18 @@ pub fn summary(curve: &Curve, written: Option<&Written>) -> String {
 }
 
 /// A warning when some velocities of `rows` lie outside the model's validity ([`Validity`]):
-/// how many, from which velocity, and the largest `a_max / R` there.
+/// how many, from which velocity, and the worst measures there that fail
+/// ([`crate::model::validity::worst_measures`]).
 pub fn validity_warning(rows: &[CurveRow]) -> Option<String> {
     let out: Vec<&CurveRow> = rows.iter().filter(|r| r.outside_validity).collect();
     let first = out.first()?;
-    let worst = out
-        .iter()
-        .map(|r| r.contact_radius_ratio)
-        .fold(0.0, f64::max);
+    let worst = crate::model::validity::worst_measures(
+        out.iter()
+            .map(|r| (r.contact_radius_ratio, r.wave_transit_ratio)),
+    );
     Some(format!(
-        "{} of {} velocities lie outside the model's validity (from v0 = {:.4e} m/s; a_max/R up \
-         to {worst:.3}; `run --json` at one of them says why)",
+        "{} of {} velocities lie outside the model's validity (from v0 = {:.4e} m/s; {worst}; \
+         `run --json` at one of them says why)",
         out.len(),
         rows.len(),
         first.v0

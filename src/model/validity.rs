@@ -64,6 +64,37 @@ pub struct Validity {
     pub warnings: Vec<String>,
 }
 
+/// Why several answers lie outside the model's validity, in one phrase: the largest `a_max / R`
+/// among them where it exceeds the paraboloid's limit, and the largest wave transit ratio where
+/// it exceeds its limit (`measures`: `(a_max / R, wave transit ratio)` of each such answer); the
+/// largest `a_max / R` alone where neither does (another check warned, e.g. an exact sphere's
+/// wider limit or a cone's slope).
+pub fn worst_measures(measures: impl IntoIterator<Item = (f64, Option<f64>)>) -> String {
+    let (mut x, mut wave) = (0.0f64, None::<f64>);
+    for (a, w) in measures {
+        x = x.max(a);
+        if let Some(w) = w {
+            wave = Some(wave.map_or(w, |m: f64| m.max(w)));
+        }
+    }
+    let mut parts = Vec::new();
+    if x > PARABOLOID_MAX_CONTACT_RADIUS_RATIO {
+        parts.push(format!("a_max/R up to {x:.3}"));
+    }
+    if let Some(w) = wave.filter(|w| *w > QUASI_STATIC_MAX_WAVE_RATIO) {
+        parts.push(format!(
+            "shear waves take up to {:.1} % of the contact time to cross the contact (limit \
+             {:.0} %)",
+            100.0 * w,
+            100.0 * QUASI_STATIC_MAX_WAVE_RATIO
+        ));
+    }
+    if parts.is_empty() {
+        parts.push(format!("a_max/R up to {x:.3}"));
+    }
+    parts.join("; ")
+}
+
 /// `F_sphere(a) / F_paraboloid(a) - 1` at the same contact radius, `x = a / R` in `[0, 1)`.
 pub fn sphere_force_excess(x: f64) -> f64 {
     if x < 1e-3 {
