@@ -614,6 +614,10 @@ fn material_of(
     Ok(BodyMaterial::Viscoelastic(v))
 }
 
+/// Largest `log10 a_T` a temperature may give: relaxation times of a material stretched by more
+/// leave the range of a double (a shift of 1e300 is far past any glass transition anyway).
+pub const MAX_LOG10_SHIFT: f64 = 300.0;
+
 /// `material` at `temperature` (°C; the law's `t_ref` when `None`) by its shift `law`: every
 /// relaxation time times `a_T`, with `log10 a_T`; errors placed at `table`. The one path of the
 /// scene file and the Python binding.
@@ -627,6 +631,14 @@ pub fn shifted_material(
     let log10_a = law
         .log10_a(t)
         .map_err(|e| e.at(format!("{table} shift at [impact] temperature")))?;
+    if log10_a > MAX_LOG10_SHIFT {
+        return Err(scene_error(format!(
+            "{table} shift: [impact] temperature = {t} °C gives log10 a_T = {log10_a:.4e}, \
+             relaxation times beyond a double's range; allowed: temperature > {:.4} °C for this \
+             law (log10 a_T < {MAX_LOG10_SHIFT})",
+            law.min_temperature(MAX_LOG10_SHIFT)
+        )));
+    }
     let shifted = material
         .time_shifted(10f64.powf(log10_a))
         .map_err(|e| e.at(format!("{table} shift")))?;

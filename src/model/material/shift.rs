@@ -135,6 +135,25 @@ impl ShiftLaw {
         }
     }
 
+    /// The lowest temperature (°C) at which `log10 a_T <= max_log10` (`max_log10 > 0`): both
+    /// laws grow without bound only towards low temperatures (WLF towards `t_ref - c2`,
+    /// Arrhenius towards absolute zero), and stay finite above.
+    pub fn min_temperature(&self, max_log10: f64) -> f64 {
+        match *self {
+            // -c1 d / (c2 + d) = m  <=>  d = -m c2 / (c1 + m)
+            ShiftLaw::Wlf { c1, c2, t_ref } => t_ref - max_log10 * c2 / (c1 + max_log10),
+            ShiftLaw::Arrhenius {
+                activation_energy,
+                t_ref,
+            } => {
+                let rk = t_ref + ZERO_CELSIUS_K;
+                let inv = 1.0 / rk
+                    + max_log10 * GAS_CONSTANT * std::f64::consts::LN_10 / activation_energy;
+                1.0 / inv - ZERO_CELSIUS_K
+            }
+        }
+    }
+
     /// The law's name in the scene table and the JSON output: `wlf` or `arrhenius`.
     pub fn kind(&self) -> &'static str {
         match self {
@@ -218,6 +237,22 @@ impl Material {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `min_temperature` inverts `log10_a` for both laws.
+    #[test]
+    fn min_temperature_is_where_the_shift_reaches_its_bound() {
+        for law in [
+            ShiftLaw::wlf(8.86, 101.6, 20.0).unwrap(),
+            ShiftLaw::arrhenius(2.0e5, 20.0).unwrap(),
+        ] {
+            for m in [1.0, 30.0, 300.0] {
+                let t = law.min_temperature(m);
+                let back = law.log10_a(t).unwrap();
+                assert!((back - m).abs() < 1e-9 * m, "{law:?} {m} {t} {back}");
+                assert!(law.log10_a(t + 1e-6).unwrap() < m);
+            }
+        }
+    }
 
     #[test]
     fn time_shift_scales_every_time_and_no_modulus() {
