@@ -37,6 +37,18 @@ fn the_shipped_scenes_are_plausible() {
     assert!((rho - 7850.0).abs() < 10.0, "{rho}");
 }
 
+/// A Poisson ratio a hair below 0.5 gives a huge bulk modulus on purpose (K = 5e15 Pa at
+/// nu = 0.4999999999): no unit warning, since the bulk carries the shear modulus's units; a
+/// bulk modulus written in MPa still warns.
+#[test]
+fn a_bulk_from_a_poisson_ratio_near_one_half_is_not_a_unit_mistake() {
+    let s = default_with(&[("poisson = 0.49", "poisson = 0.4999999999")]);
+    assert_eq!(plausibility::warnings(&s.impact), Vec::<String>::new());
+    let k = default_with(&[("poisson = 0.49", "k_0 = 5.0e13")]);
+    let w = plausibility::warnings(&k.impact);
+    assert!(w.iter().any(|w| w.contains("bulk modulus")), "{w:?}");
+}
+
 /// The scene written in mm, g and MPa: a CoR of 0.99, and warnings on the density and
 /// every modulus, in the text and in JSON `warnings`.
 #[test]
