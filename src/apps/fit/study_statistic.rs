@@ -107,9 +107,11 @@ fn by_cell(r: &BoxReport, threshold: f64) -> String {
     let mut s = format!(
         "\nThe same share over all sets of each design cell (whatever `fit` reported; each row \
          pools the sets of the cells it names), with the 95 % Wilson interval where the \
-         quantity is `p2`, fitted in every set. Where a cell's share is well above 5 % the \
-         statistic's own law departs from chi-square there (a finite-sample effect of the \
-         model's curvature), which no selection of the reported sets explains. The last column \
+         quantity is `p2`, fitted in every set. A cell's share well above 5 % is either the \
+         statistic's own law departing from chi-square there, which no selection of the \
+         reported sets explains, or sampling noise (80 sets per cell: 10 % is two standard \
+         errors above 5 %); the same cell's sets of another seed (`--seed 2 --only ...`) tell \
+         the two apart (docs/theory.md §16.1). The last column \
          checks the law without any profile: the share of sets whose truth's misfit exceeds \
          the estimate's by more than the 95 % point of chi-square with as many degrees of \
          freedom as the fit has identifiable directions (Wilks' statistic of all parameters at \
