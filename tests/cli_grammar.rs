@@ -92,7 +92,16 @@ fn cor_json_and_canonical_headers() {
     // validity judged here, even where the canonical contact is wide (a_max/R = 0.63 at these
     // groups, 0.32 in the default scene that has them)
     let wide = run(
-        &["cor", "--nu", "0.49", "--p2", "0.1", "--p3", "0.3911599", "--json"],
+        &[
+            "cor",
+            "--nu",
+            "0.49",
+            "--p2",
+            "0.1",
+            "--p3",
+            "0.3911599",
+            "--json",
+        ],
         dir.path(),
     );
     let w: serde_json::Value = serde_json::from_slice(&wide.stdout).unwrap();

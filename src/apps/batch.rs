@@ -143,7 +143,7 @@ pub fn solve_groups(
 }
 
 /// Rows formatted per task of [`write_results`].
-const WRITE_CHUNK: usize = 4096;
+pub const WRITE_CHUNK: usize = 4096;
 
 /// Write the result table as CSV. The rows are formatted in parallel (rayon), a chunk of
 /// [`WRITE_CHUNK`] rows per task, each by its own CSV writer without a header, and written in
