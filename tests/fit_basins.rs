@@ -28,6 +28,14 @@ fn run(file: &str, fixes: &[Fix]) -> (FitResult, f64, [f64; 4]) {
     (fit::fit(&model, &d, &fixed).unwrap(), truth_ssr, truth)
 }
 
+/// `--fix nu=value`.
+fn nu_at(value: f64) -> Fix {
+    Fix {
+        name: "nu".into(),
+        value,
+    }
+}
+
 fn ssr(r: &FitResult) -> f64 {
     r.residuals.iter().map(|x| x.weighted * x.weighted).sum()
 }
@@ -69,10 +77,7 @@ fn intervals_hold_the_truth(r: &FitResult, truth: &[f64; 4]) {
 
 #[test]
 fn nu_fixed_finds_the_basin_of_the_truth() {
-    let nu = Fix {
-        name: "nu".into(),
-        value: 0.49,
-    };
+    let nu = nu_at(0.49);
     let (r, truth_ssr, truth) = run("drops_nu049.csv", &[nu]);
     assert!(
         ssr(&r) <= truth_ssr * (1.0 + 1e-6),
@@ -98,10 +103,7 @@ fn nu_fixed_finds_the_basin_of_the_truth() {
 /// its zero coefficient (NaN). Now a fit with finite values and intervals.
 #[test]
 fn nu_fixed_at_one_half_fits() {
-    let nu = Fix {
-        name: "nu".into(),
-        value: 0.5,
-    };
+    let nu = nu_at(0.5);
     let (r, ..) = run("drops_nu049.csv", &[nu]);
     assert!(ssr(&r).is_finite());
     for e in r.parameters.iter().chain(&r.groups) {
@@ -119,10 +121,7 @@ fn nu_fixed_at_one_half_fits() {
 /// clamped it; the profile is flat in between (`--fix eta=600 .. 4000` all fit equally well).
 #[test]
 fn one_velocity_with_contact_times_determines_no_modulus() {
-    let nu = Fix {
-        name: "nu".into(),
-        value: 0.49,
-    };
+    let nu = nu_at(0.49);
     let (r, ..) = run("one_velocity_with_contact_times.csv", &[nu]);
     for name in ["g_inf", "g_1", "eta"] {
         let e = r.get(name).unwrap();
@@ -300,10 +299,7 @@ fn box_set_of_seed(seed: u64, k: u64) -> (FitResult, [f64; 4], f64, Vec<Option<f
     let fixes: Vec<Fix> = if Cell::of(k).nu_free {
         vec![]
     } else {
-        vec![Fix {
-            name: "nu".into(),
-            value: truth[3],
-        }]
+        vec![nu_at(truth[3])]
     };
     let (model, fixed) = fit::setup_model(ModelKind::StandardSolid, &fixes, vec![]).unwrap();
     let truth_ssr = fit::misfit(&model, &d, &truth).unwrap();

@@ -131,12 +131,7 @@ fn curve_with_a_density_names_the_wave_transit() {
         .ends_with(",contact_radius_ratio,indentation_ratio,wave_transit_ratio"));
     for l in lines {
         let f: Vec<&str> = l.split(',').collect();
-        std::fs::write(
-            dir.path().join("v.toml"),
-            scene(f[0].parse().unwrap(), "density = 1100.0"),
-        )
-        .unwrap();
-        let v = run_json_file(&dir, "v.toml");
+        let v = run_json(&scene(f[0].parse().unwrap(), "density = 1100.0"));
         let w: f64 = f[7].parse().unwrap();
         assert_eq!(
             w,
@@ -144,10 +139,4 @@ fn curve_with_a_density_names_the_wave_transit() {
             "{l}"
         );
     }
-}
-
-fn run_json_file(dir: &tempfile::TempDir, file: &str) -> serde_json::Value {
-    let o = run(&["run", file, "--json"], dir.path());
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    serde_json::from_slice(&o.stdout).unwrap()
 }

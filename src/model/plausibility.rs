@@ -71,19 +71,19 @@ fn density(out: &mut Vec<String>, name: &str, m: f64, r: f64) {
 
 fn material(out: &mut Vec<String>, name: &str, m: &Material, v0: f64) {
     let (lo, hi) = MODULUS_RANGE;
-    let shear = [
+    let mut moduli = vec![
         ("relaxed shear modulus", m.g_inf()),
         ("glassy shear modulus", m.shear().glassy()),
-        ("relaxed bulk modulus", m.bulk_relaxed()),
-        ("glassy bulk modulus", m.bulk_glassy()),
     ];
-    // a bulk computed from a Poisson ratio carries the shear modulus's units, checked above,
+    // a bulk computed from a Poisson ratio carries the units of the shear modulus, checked here,
     // and grows without bound towards 0.5 (nu = 0.4999999999 gives K = 5e15 Pa on purpose)
-    let from_poisson = m.written_poisson().is_some();
-    for (what, x) in shear {
-        if from_poisson && what.contains("bulk") {
-            continue;
-        }
+    if m.written_poisson().is_none() {
+        moduli.extend([
+            ("relaxed bulk modulus", m.bulk_relaxed()),
+            ("glassy bulk modulus", m.bulk_glassy()),
+        ]);
+    }
+    for (what, x) in moduli {
         // an incompressible bulk is infinite on purpose, and a liquid relaxes to zero
         if x.is_finite() && x != 0.0 && !(lo..=hi).contains(&x) {
             out.push(format!(

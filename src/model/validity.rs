@@ -77,20 +77,18 @@ pub fn worst_measures(measures: impl IntoIterator<Item = (f64, Option<f64>)>) ->
             wave = Some(wave.map_or(w, |m: f64| m.max(w)));
         }
     }
+    let wave = wave.filter(|w| *w > QUASI_STATIC_MAX_WAVE_RATIO);
     let mut parts = Vec::new();
-    if x > PARABOLOID_MAX_CONTACT_RADIUS_RATIO {
+    if x > PARABOLOID_MAX_CONTACT_RADIUS_RATIO || wave.is_none() {
         parts.push(format!("a_max/R up to {x:.3}"));
     }
-    if let Some(w) = wave.filter(|w| *w > QUASI_STATIC_MAX_WAVE_RATIO) {
+    if let Some(w) = wave {
         parts.push(format!(
             "shear waves take up to {:.1} % of the contact time to cross the contact (limit \
              {:.0} %)",
             100.0 * w,
             100.0 * QUASI_STATIC_MAX_WAVE_RATIO
         ));
-    }
-    if parts.is_empty() {
-        parts.push(format!("a_max/R up to {x:.3}"));
     }
     parts.join("; ")
 }

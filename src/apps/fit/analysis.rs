@@ -52,18 +52,9 @@ pub(super) fn analyse(
     let in_range = |k: usize| sv[k] > FIT_NULL_RATIO * s_max && s_max > 0.0;
     let rank = (0..sv.len()).filter(|&k| in_range(k)).count();
     let dof = n.saturating_sub(rank);
-    let noise_scale = if ctx.data.noise_known() {
-        Some(1.0)
-    } else if dof > 0 {
-        Some((ss / dof as f64).sqrt())
-    } else {
-        None
-    };
-    let quantile = match noise_scale {
-        None => None,
-        Some(_) if ctx.data.noise_known() => Some(normal_quantile()),
-        Some(_) => Some(t_quantile(dof)),
-    };
+    let scale_and_quantile = noise_and_quantile(ctx.data, ss, dof);
+    let noise_scale = scale_and_quantile.map(|x| x.0);
+    let quantile = scale_and_quantile.map(|x| x.1);
     // covariance on the identified subspace, in the full coordinate numbering
     let covariance = noise_scale.map(|s| {
         let mut c = vec![vec![0.0; np]; np];
@@ -557,6 +548,20 @@ pub(super) fn verdict(parameters: &[Estimate], groups: &[Estimate]) -> String {
         names(&det),
         names(&not)
     )
+}
+
+/// The noise scale and the 97.5 % quantile of the intervals for a weighted misfit `ss` with
+/// `dof` degrees of freedom: `(1, z)` when the data carry standard deviations, else
+/// `(sqrt(ss / dof), t_dof)` (Student's `t`), `None` without degrees of freedom. The threshold of
+/// the profile intervals is `q² s²`.
+pub(super) fn noise_and_quantile(data: &Data, ss: f64, dof: usize) -> Option<(f64, f64)> {
+    if data.noise_known() {
+        Some((1.0, normal_quantile()))
+    } else if dof > 0 {
+        Some(((ss / dof as f64).sqrt(), t_quantile(dof)))
+    } else {
+        None
+    }
 }
 
 /// The 97.5 % quantile of the standard normal distribution.

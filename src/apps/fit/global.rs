@@ -7,7 +7,8 @@ use std::cell::RefCell;
 
 use levenberg_marquardt::LevenbergMarquardt;
 
-use super::{normal_quantile, ssr, t_quantile, Ctx, Data, LmProblem, Model, ModelKind, Parameter};
+use super::analysis::noise_and_quantile;
+use super::{ssr, Ctx, Data, LmProblem, Model, ModelKind, Parameter};
 use crate::error::{Error, Result};
 use crate::model::tolerances::{FIT_RTOL, FIT_SCOUT_PATIENCE, FIT_SCOUT_TOL, FIT_SCREEN_RTOL};
 
@@ -75,16 +76,10 @@ pub(super) fn stiffness_ratio(model: &Model, values: &[f64]) -> f64 {
     model.get(values, Parameter::GInf) / relaxing
 }
 
-/// The likelihood-ratio threshold of the intervals before the fit's noise scale is known:
-/// `q²` with the normal quantile when the data carry standard deviations, else `t² s²` with
-/// `s² = ssr / (n - p)` from the misfit `ssr` of `p` moving coordinates and `n` residuals
-/// (infinite without degrees of freedom: every scouted basin is then kept).
+/// The likelihood-ratio threshold of the intervals before the fit's rank is known
+/// ([`super::analysis::noise_and_quantile`] with `n - p` degrees of freedom, from the misfit
+/// `ssr` of `p` moving coordinates and `n` residuals; infinite without degrees of freedom: every
+/// scouted basin is then kept).
 pub(super) fn provisional_threshold(data: &Data, ssr: f64, n: usize, p: usize) -> f64 {
-    if data.noise_known() {
-        return normal_quantile().powi(2);
-    }
-    match n.checked_sub(p).filter(|&d| d > 0) {
-        Some(dof) => t_quantile(dof).powi(2) * ssr / dof as f64,
-        None => f64::INFINITY,
-    }
+    noise_and_quantile(data, ssr, n.saturating_sub(p)).map_or(f64::INFINITY, |(s, q)| q * q * s * s)
 }
