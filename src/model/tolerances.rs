@@ -63,6 +63,9 @@ pub const FIT_LM_PATIENCE: usize = 40;
 pub const FIT_SCOUT_TOL: f64 = 1e-4;
 /// `fit`: residual evaluations per free parameter (plus one) of a scouting run.
 pub const FIT_SCOUT_PATIENCE: usize = 4;
+/// `fit`: the best screened points (distinct) that each start a scouting run, besides the best
+/// one of every decade of the stiffness ratio.
+pub const FIT_SCOUT_TOP: usize = 8;
 /// `fit`: Levenberg-Marquardt runs started from the best screened points.
 pub const FIT_LM_STARTS: usize = 2;
 /// `fit`: a basin scouted from a decade of the stiffness ratio is minimised fully when its

@@ -9,15 +9,14 @@
 //!   noise).
 //! - Coordinates: `ln` of every modulus and viscosity (positivity) and the logistic coordinate
 //!   of `nu` in `(-1, 0.5)` ([`model::ParamKind`]); fixed parameters (`--fix`) are left out.
-//! - Multi-start: a grid over the physically sensible box (`p2 = g_inf / g_1` from 1e-4 to 1,
-//!   `p3` at the data's mean velocity from 0.03 to 300, `nu` at -0.5, 0, 0.3, 0.4, 0.45, 0.47,
-//!   0.48 and 0.49 (denser near 0.5, where `1 - 2 nu` sets the bulk-to-shear ratio and the
-//!   misfit has narrow valleys along `nu`), and with contact times
-//!   `g_inf` from 1e-3 to 1 times the Hertz modulus of the measured contact times) is screened at
-//!   a loose rtol; Levenberg–Marquardt (the `levenberg-marquardt` crate, MINPACK's algorithm, with
-//!   central-difference Jacobians) runs from the best [`FIT_LM_STARTS`] of them and from the best
-//!   one of every `nu` level (the misfit can have several basins along `nu`), and the smallest
-//!   misfit wins.
+//! - Multi-start: a grid over the sensible box (`p2 = g_inf / g_1` from 1e-4 to 1, `p3` at the
+//!   data's mean velocity from 0.03 to 300, `nu` at -0.5, 0, 0.3, 0.4, 0.45, 0.47, 0.48, 0.49,
+//!   denser near 0.5 where the misfit has narrow valleys along `nu`, and with contact times
+//!   `g_inf` from 1e-3 to 1 times their Hertz modulus) is screened at a loose rtol;
+//!   Levenberg–Marquardt (the `levenberg-marquardt` crate, MINPACK's algorithm, central-difference
+//!   Jacobians) runs from the best [`FIT_LM_STARTS`], the best of every `nu` level, and the basins
+//!   scouted (`global.rs`) from the best point of every decade of `p2` and the best
+//!   [`FIT_SCOUT_TOP`] within [`FIT_SCOUT_KEEP`] thresholds of the best scout; least misfit wins.
 //! - CoR alone depends on the material only through the groups of paper Eq. (11): `nu`,
 //!   `p2 = g_inf / g_1` and `p3 = eta (v0 R / (m^2 g_inf^3))^(1/5)`, i.e. `eta / g_inf^(3/5)`
 //!   for given spheres and velocities. Scaling `(g_inf, g_1, eta)` by `(s, s, s^(3/5))` leaves
@@ -91,7 +90,7 @@ use crate::model::tolerances::{
     FIT_FD_STEP, FIT_LM_PATIENCE, FIT_LM_STARTS, FIT_LM_TOL, FIT_MAX_HALF_WIDTH,
     FIT_NULL_COMPONENT, FIT_NULL_RATIO, FIT_PROFILE_BEYOND, FIT_PROFILE_OTHERS,
     FIT_PROFILE_OTHERS_SSR, FIT_PROFILE_STEP, FIT_PROFILE_STEPS, FIT_RTOL, FIT_SCOUT_KEEP,
-    FIT_SCREEN_RTOL,
+    FIT_SCOUT_TOP, FIT_SCREEN_RTOL,
 };
 use crate::solvers::{solve, SolveOptions, SolverKind};
 use analysis::analyse;
@@ -629,7 +628,7 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
                     .map(|v| (*v).clone())
                     .collect();
                 from.extend(
-                    ctx.scout_bins(&level, &held)
+                    ctx.scout_basins(&level, &held, 0)
                         .into_iter()
                         .next()
                         .map(|(_, v)| v),
@@ -652,12 +651,12 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
         }
         None => starts_from.extend(screened.iter().take(FIT_LM_STARTS).map(|(_, v)| v.clone())),
     }
-    // Global stage: the best basin scouted from every decade of the stiffness ratio `p2`
-    // starts a full minimisation too, so that a basin away from the best screened points is
+    // Global stage: the best basin scouted from every decade of the stiffness ratio `p2` and
+    // from the best FIT_SCOUT_TOP screened points starts a full minimisation too, so that a basin away from the best screened points is
     // not missed; so does every other scouted basin within FIT_SCOUT_KEEP thresholds of it,
     // whose minimum may lie within the threshold of the best and then widens the intervals.
     let all: Vec<&Vec<f64>> = screened.iter().map(|(_, v)| v).collect();
-    let scouted = ctx.scout_bins(&all, &moving);
+    let scouted = ctx.scout_basins(&all, &moving, FIT_SCOUT_TOP);
     if let Some(&(best_scout, _)) = scouted.first() {
         let margin =
             FIT_SCOUT_KEEP * global::provisional_threshold(data, best_scout, n, moving.len());

@@ -23,7 +23,8 @@ pub(super) fn p3_scale(data: &Data) -> f64 {
     (v_ref * r / (m * m)).powf(0.2)
 }
 
-/// Starting values over the sensible box (see the module docs), with the fixed values kept.
+/// Starting values over the sensible box (see the module docs), with the fixed values kept,
+/// each once.
 pub(super) fn candidates(
     model: &Model,
     data: &Data,
@@ -95,7 +96,10 @@ pub(super) fn candidates(
                             *x = *f;
                         }
                     }
-                    out.push(v);
+                    // fixed values make grid points coincide (every nu level with nu fixed)
+                    if !out.contains(&v) {
+                        out.push(v);
+                    }
                 }
             }
         }
