@@ -104,13 +104,15 @@ fn by_cell(r: &BoxReport, threshold: f64) -> String {
     ];
     // Wilks' statistic of all parameters at once (it needs no profile)
     let wilks = |c: &Cell| ChiSquared::new(dof(c) as f64).map_or(f64::NAN, |d| d.inverse_cdf(0.95));
+    // sets per combination of the two factors (the design cycles through them)
+    let per_cell = r.config.sets / 4;
     let mut s = format!(
         "\nThe same share over all sets of each design cell (whatever `fit` reported; each row \
          pools the sets of the cells it names), with the 95 % Wilson interval where the \
          quantity is `p2`, fitted in every set. A cell's share well above 5 % is either the \
          statistic's own law departing from chi-square there, which no selection of the \
-         reported sets explains, or sampling noise (80 sets per cell: 10 % is two standard \
-         errors above 5 %); the same cell's sets of another seed (`--seed 2 --only ...`) tell \
+         reported sets explains, or sampling noise ({per_cell} sets per cell: {two_se:.1} % is \
+         two standard errors above 5 %); the same cell's sets of another seed (`--seed 2 --only ...`) tell \
          the two apart (docs/theory.md §16.1). The last column \
          checks the law without any profile: the share of sets whose truth's misfit exceeds \
          the estimate's by more than the 95 % point of chi-square with as many degrees of \
@@ -120,7 +122,8 @@ fn by_cell(r: &BoxReport, threshold: f64) -> String {
          chi-square):\n\n| sets | {} | all parameters: SSR_truth - SSR_fit above chi-square \
          95 % [95 % Wilson], mean excess / dof |\n| --- |{}\n",
         QUANTITIES.join(" | "),
-        " --- |".repeat(QUANTITIES.len() + 1)
+        " --- |".repeat(QUANTITIES.len() + 1),
+        two_se = 100.0 * (0.05 + 2.0 * (0.05 * 0.95 / per_cell.max(1) as f64).sqrt()),
     );
     for (label, pick) in combinations.into_iter().chain(FACTORS[4..].iter().copied()) {
         s.push_str(&format!("| {label} |"));
