@@ -421,7 +421,7 @@ pub struct FitStudyArgs {
     #[arg(long = "box", conflicts_with_all = ["reps", "noise"])]
     pub across_box: bool,
     /// Data sets of the study across the box.
-    #[arg(long, default_value_t = 320, requires = "across_box")]
+    #[arg(long, default_value_t = 640, requires = "across_box")]
     pub sets: usize,
     /// Only these sets of the box study (comma-separated indices below --sets; each set's
     /// truth and noise depend only on the seed and its index).
