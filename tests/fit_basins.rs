@@ -122,7 +122,8 @@ fn nu_fixed_at_one_half_fits() {
 /// [491, 5001] only because its profile clamped at the reach of a factor 10, so that its end
 /// proved nothing. Now `eta` is either not determined or its interval holds every value of an
 /// independent scan (21 values log-spaced over 300..10000 Pa s, each a fit with `eta` fixed
-/// there and its own multi-start) whose profile misfit lies within the threshold, the whole flat stretch included.
+/// there and its own multi-start) whose profile misfit lies within the threshold, the whole
+/// flat stretch included.
 #[test]
 fn one_velocity_with_contact_times_determines_no_modulus() {
     let nu = nu_at(0.49);

@@ -1,7 +1,7 @@
 //! The global stage of the fit: short Levenberg–Marquardt runs that scout the basin of every
 //! decade of the stiffness ratio `p2` and of the best few screened points, so that the full
-//! minimisations also start in basins away from the best screened points (the Kelvin corner `p2 -> 0` attracts those when `nu` is near
-//! 0.5).
+//! minimisations also start in basins away from the best screened points (the Kelvin corner
+//! `p2 -> 0` attracts those when `nu` is near 0.5).
 
 use std::cell::RefCell;
 
@@ -44,10 +44,12 @@ impl Ctx<'_> {
 
     /// The scouted basins ([`Ctx::scout`]) from the best screened point of every decade of the
     /// stiffness ratio `p2` among `points` (sorted best first) and from the first `top` points
-    /// (the global stage takes [`FIT_SCOUT_TOP`]), `moving` free: misfit and values of each, best first. The best
-    /// point of a decade alone missed a basin of the same decade: in set 313 of the box study
-    /// with seed 2 (`nu` fixed, contact times) the best screened points of every decade led to
-    /// a minimum of misfit 611, the fourth best screened point to the truth's basin (12.5).
+    /// (the global stage takes
+    /// [`FIT_SCOUT_TOP`](crate::model::tolerances::FIT_SCOUT_TOP)), `moving` free: misfit and
+    /// values of each, best first. The best point of a decade alone missed a basin of the same
+    /// decade: in set 313 of the box study with seed 2 (`nu` fixed, contact times) the best
+    /// screened points of every decade led to minima of misfit 611 and above, the fourth best
+    /// screened point to the truth's basin (12.5).
     pub(super) fn scout_basins(
         &self,
         points: &[&Vec<f64>],

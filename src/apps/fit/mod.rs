@@ -652,9 +652,10 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
         None => starts_from.extend(screened.iter().take(FIT_LM_STARTS).map(|(_, v)| v.clone())),
     }
     // Global stage: the best basin scouted from every decade of the stiffness ratio `p2` and
-    // from the best FIT_SCOUT_TOP screened points starts a full minimisation too, so that a basin away from the best screened points is
-    // not missed; so does every other scouted basin within FIT_SCOUT_KEEP thresholds of it,
-    // whose minimum may lie within the threshold of the best and then widens the intervals.
+    // from the best FIT_SCOUT_TOP screened points starts a full minimisation too, so that a
+    // basin away from the best screened points is not missed; so does every other scouted
+    // basin within FIT_SCOUT_KEEP thresholds of it, whose minimum may lie within the threshold
+    // of the best and then widens the intervals.
     let all: Vec<&Vec<f64>> = screened.iter().map(|(_, v)| v).collect();
     let scouted = ctx.scout_basins(&all, &moving, FIT_SCOUT_TOP);
     if let Some(&(best_scout, _)) = scouted.first() {

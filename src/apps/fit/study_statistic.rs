@@ -112,8 +112,8 @@ fn by_cell(r: &BoxReport, threshold: f64) -> String {
          quantity is `p2`, fitted in every set. A cell's share well above 5 % is either the \
          statistic's own law departing from chi-square there, which no selection of the \
          reported sets explains, or sampling noise ({per_cell} sets per cell: {two_se:.1} % is \
-         two standard errors above 5 %); the same cell's sets of another seed (`--seed 2 --only ...`) tell \
-         the two apart (docs/theory.md §16.1). The last column \
+         two standard errors above 5 %); the same cell's sets of another seed \
+         (`--seed 2 --only ...`) tell the two apart (docs/theory.md §16.1). The last column \
          checks the law without any profile: the share of sets whose truth's misfit exceeds \
          the estimate's by more than the 95 % point of chi-square with as many degrees of \
          freedom as the fit has identifiable directions (Wilks' statistic of all parameters at \
