@@ -127,7 +127,10 @@ fn nu_fixed_at_one_half_fits() {
 #[test]
 fn one_velocity_with_contact_times_determines_no_modulus() {
     let nu = nu_at(0.49);
-    let (r, ..) = run("one_velocity_with_contact_times.csv", &[nu.clone()]);
+    let (r, ..) = run(
+        "one_velocity_with_contact_times.csv",
+        std::slice::from_ref(&nu),
+    );
     for name in ["g_inf", "g_1"] {
         let e = r.get(name).unwrap();
         assert!(!e.identifiable, "{name}: {e:?}\n{}", r.verdict);
