@@ -28,12 +28,17 @@ fn run(file: &str, fixes: &[Fix]) -> (FitResult, f64, [f64; 4]) {
     (fit::fit(&model, &d, &fixed).unwrap(), truth_ssr, truth)
 }
 
-/// `--fix nu=value`.
-fn nu_at(value: f64) -> Fix {
+/// `--fix name=value`.
+fn fix(name: &str, value: f64) -> Fix {
     Fix {
-        name: "nu".into(),
+        name: name.into(),
         value,
     }
+}
+
+/// `--fix nu=value`.
+fn nu_at(value: f64) -> Fix {
+    fix("nu", value)
 }
 
 fn ssr(r: &FitResult) -> f64 {
@@ -146,13 +151,7 @@ fn one_velocity_with_contact_times_determines_no_modulus() {
     let mut within = Vec::new();
     for i in 0..=20 {
         let eta = 300.0 * (10000.0f64 / 300.0).powf(f64::from(i) / 20.0);
-        let fixes = [
-            nu.clone(),
-            Fix {
-                name: "eta".into(),
-                value: eta,
-            },
-        ];
+        let fixes = [nu.clone(), fix("eta", eta)];
         let (model, fixed) = fit::setup_model(ModelKind::StandardSolid, &fixes, vec![]).unwrap();
         let p = ssr(&fit::fit(&model, &r.data, &fixed).unwrap());
         if p - best < threshold {
@@ -323,14 +322,17 @@ fn box_study_flags_are_checked() {
     );
 }
 
-/// Set `k` of the box study with seed 1 (the draw depends on the seed and `k` only): the fit as
-/// the study runs it, the truth, its misfit and the fixed values.
-fn box_set(k: u64) -> (FitResult, [f64; 4], f64, Vec<Option<f64>>) {
+/// A set of the box study: the fit as the study runs it, the truth, its misfit and the fixed
+/// values.
+type BoxSet = (FitResult, [f64; 4], f64, Vec<Option<f64>>);
+
+/// Set `k` of the box study with seed 1 (the draw depends on the seed and `k` only).
+fn box_set(k: u64) -> BoxSet {
     box_set_of_seed(1, k)
 }
 
 /// [`box_set`] of the study with seed `seed`.
-fn box_set_of_seed(seed: u64, k: u64) -> (FitResult, [f64; 4], f64, Vec<Option<f64>>) {
+fn box_set_of_seed(seed: u64, k: u64) -> BoxSet {
     use mdr_impact::apps::fit::study_box::{self, BoxConfig, Cell};
     let cfg = BoxConfig {
         sets: 320,
@@ -359,13 +361,14 @@ fn box_set_of_seed(seed: u64, k: u64) -> (FitResult, [f64; 4], f64, Vec<Option<f
 /// with its own multi-start) lies above the threshold; for a group, the profile misfit at the
 /// group's true value (`fit::profile_misfit`, from the truth and from the estimate) does.
 fn box_set_keeps_its_promises(k: u64) {
-    box_set_keeps_its_promises_of_seed(1, k);
+    keeps_its_promises(k, &box_set(k));
 }
 
-/// [`box_set_keeps_its_promises`] for set `k` of the study with seed `seed`.
-fn box_set_keeps_its_promises_of_seed(seed: u64, k: u64) {
-    let (r, truth, truth_ssr, fixed) = box_set_of_seed(seed, k);
-    let best = ssr(&r);
+/// [`box_set_keeps_its_promises`] for set `k` (named in the messages), already fitted.
+fn keeps_its_promises(k: u64, set: &BoxSet) {
+    let (r, truth, truth_ssr, fixed) = set;
+    let (truth, truth_ssr) = (*truth, *truth_ssr);
+    let best = ssr(r);
     assert!(
         best <= truth_ssr * (1.0 + 1e-6),
         "set {k}: {best} > {truth_ssr}"
@@ -405,7 +408,7 @@ fn box_set_keeps_its_promises_of_seed(seed: u64, k: u64) {
             continue;
         }
         let starts = [truth.to_vec(), r.values.clone()];
-        let p = fit::profile_misfit(&r.model, &r.data, &fixed, &e.name, t, &starts)
+        let p = fit::profile_misfit(&r.model, &r.data, fixed, &e.name, t, &starts)
             .unwrap()
             .unwrap();
         assert!(
@@ -424,8 +427,9 @@ fn box_set_keeps_its_promises_of_seed(seed: u64, k: u64) {
 /// truth's; the profile misfit stays within the threshold down to the truth.
 #[test]
 fn box_set_69_flat_profile_is_not_determined() {
-    box_set_keeps_its_promises(69);
-    let (r, ..) = box_set(69);
+    let set = box_set(69);
+    keeps_its_promises(69, &set);
+    let r = &set.0;
     for name in ["g_1", "p2"] {
         assert!(!r.get(name).unwrap().identifiable, "{name}: {}", r.verdict);
     }
@@ -587,8 +591,9 @@ fn box_set_87_flat_shoulder_is_not_determined() {
 /// from the estimate) that lies within the threshold must lie inside the interval.
 #[test]
 fn box_seed_2_set_319_interval_holds_the_second_basin() {
-    let (r, truth, _, fixed) = box_set_of_seed(2, 319);
-    let best = ssr(&r);
+    let set = box_set_of_seed(2, 319);
+    let (r, truth, _, fixed) = &set;
+    let best = ssr(r);
     let (q, s) = (r.quantile.unwrap(), r.noise_scale.unwrap());
     let threshold = q * q * s * s;
     let e = r.get("p2").unwrap();
@@ -596,7 +601,7 @@ fn box_seed_2_set_319_interval_holds_the_second_basin() {
     let mut within: Vec<f64> = Vec::new();
     for i in 0..=40 {
         let p2 = 10f64.powf(-3.0 + 3.0 * f64::from(i) / 40.0);
-        let p = fit::profile_misfit(&r.model, &r.data, &fixed, "p2", p2, &starts)
+        let p = fit::profile_misfit(&r.model, &r.data, fixed, "p2", p2, &starts)
             .unwrap()
             .unwrap();
         if p - best < threshold {
@@ -616,7 +621,7 @@ fn box_seed_2_set_319_interval_holds_the_second_basin() {
         within.iter().any(|&p2| p2 < 0.05) && within.iter().any(|&p2| p2 > 0.1),
         "scan points within the threshold: {within:?}"
     );
-    box_set_keeps_its_promises_of_seed(2, 319);
+    keeps_its_promises(319, &set);
 }
 
 /// Set 313 of the study with seed 2 (`nu` fixed at 0.4597, CoR and contact times, 1 % noise;
@@ -628,8 +633,9 @@ fn box_seed_2_set_319_interval_holds_the_second_basin() {
 /// the threshold of the minimum).
 #[test]
 fn box_seed_2_set_313_finds_the_truths_basin() {
-    let (r, truth, truth_ssr, _) = box_set_of_seed(2, 313);
-    let best = ssr(&r);
+    let set = box_set_of_seed(2, 313);
+    let (r, truth, truth_ssr, _) = &set;
+    let best = ssr(r);
     assert!(best < 20.0, "minimum {best} (truth {truth_ssr})");
     for (name, t) in [("g_inf", truth[0]), ("g_1", truth[1]), ("eta", truth[2])] {
         let e = r.get(name).unwrap();
@@ -640,5 +646,5 @@ fn box_seed_2_set_313_finds_the_truths_basin() {
             e.note
         );
     }
-    box_set_keeps_its_promises_of_seed(2, 313);
+    keeps_its_promises(313, &set);
 }

@@ -104,8 +104,13 @@ fn by_cell(r: &BoxReport, threshold: f64) -> String {
     ];
     // Wilks' statistic of all parameters at once (it needs no profile)
     let wilks = |c: &Cell| ChiSquared::new(dof(c) as f64).map_or(f64::NAN, |d| d.inverse_cdf(0.95));
-    // sets per combination of the two factors (the design cycles through them)
-    let per_cell = r.config.sets / 4;
+    // fitted sets in the smallest combination of the two factors that has any
+    let per_cell = combinations
+        .iter()
+        .map(|(_, pick)| r.outcomes.iter().filter(|o| pick(&o.cell)).count())
+        .filter(|&n| n > 0)
+        .min()
+        .unwrap_or(0);
     let mut s = format!(
         "\nThe same share over all sets of each design cell (whatever `fit` reported; each row \
          pools the sets of the cells it names), with the 95 % Wilson interval where the \
