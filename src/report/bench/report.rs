@@ -93,8 +93,10 @@ pub fn summary(
         let _ = writeln!(
             s,
             "\n`fast` at rtol 1e-6 on the general materials of VALIDATION.md section 1c (one core, \
-             CoR only), each beside the standard solid of the random sample in the same CoR group; \
-             the ratio is of the median times:\n"
+             CoR only), each beside the standard solids of the random sample in the same CoR group \
+             and beside those within {COR_BAND} of its CoR (a group spans CoRs whose cost differs \
+             more than the terms': its median sits near the group's cheap end); each ratio is of \
+             the median times:\n"
         );
         s.push_str(&general_timing_table(general, random));
     }

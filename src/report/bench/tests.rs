@@ -80,22 +80,33 @@ fn general_timing_table_compares_within_the_cor_group() {
         },
     ];
     let table = general_timing_table(&general, Some(&random));
-    // the nearly elastic group has one row (1e-5 s): ratio 3; the dissipative one two rows,
-    // median the upper one (1e-5 s), mean work 25.0 / 150: ratio 2
+    // the nearly elastic group has one row (1e-5 s): ratio 3, and that row (0.95) lies within
+    // 0.05 of the CoR 0.97; the dissipative group two rows, median the upper one (1e-5 s), mean
+    // work 25.0 / 150: ratio 2, and neither of them (0.5, 0.4) lies within 0.05 of the CoR 0.6
     let e = line_of(&table, "| g-elastic | 30 |");
     assert!(
-        e.contains("nearly elastic (e >= 0.9)") && e.ends_with("| 3.0 |"),
+        e.contains("nearly elastic (e >= 0.9)")
+            && e.contains("| 3.0 |")
+            && e.ends_with("| 1: 10.0 µs, 10.0 / 60 | 3.0 |"),
         "{table}"
     );
     let d = line_of(&table, "| g-dissipative | 62 |");
     assert!(
-        d.contains("25.0 / 150") && d.ends_with("| 2.0 |"),
+        d.contains("25.0 / 150 | 2.0 |") && d.ends_with("| - | - |"),
         "{table}"
     );
+    // a row within the band of the dissipative case (slower: 3e-5 s) enters its group too
+    let mut wider = random.to_vec();
+    let mut near = timing(0.62, [40, 100], [300, 800]);
+    near.seconds[0] = 3e-5;
+    wider.push(near);
+    let table = general_timing_table(&general, Some(&wider));
+    let d = line_of(&table, "| g-dissipative | 62 |");
+    assert!(d.ends_with("| 1: 30.0 µs, 40.0 / 300 | 0.7 |"), "{table}");
     // without the random sample: dashes
     let table = general_timing_table(&general, None);
     assert!(
-        line_of(&table, "| g-elastic").ends_with("| - | - |"),
+        line_of(&table, "| g-elastic").ends_with("| - | - | - | - |"),
         "{table}"
     );
 }
@@ -128,13 +139,14 @@ fn general_targets_compare_polymers_with_their_group() {
     ];
     let random = [
         timing(0.5, [10, 40], [60, 300]),
+        timing(0.3, [10, 40], [60, 300]),
         timing(0.95, [10, 40], [60, 300]),
     ];
     let t = general_targets(&rows, Some(&random));
     assert_eq!(t.len(), 1, "{t:?}");
     assert!(t[0].contains("`polyisobutylene`"), "{}", t[0]);
     assert!(
-        t[0].contains(": met (1.8x: 18.0 µs against 10.0 µs)"),
+        t[0].contains(": met (1.8x: 18.0 µs against 10.0 µs; 1.8x the standard solids within 0.05 of its CoR (10.0 µs))"),
         "{}",
         t[0]
     );
