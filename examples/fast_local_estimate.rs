@@ -7,15 +7,25 @@
 //! cargo run --release --example fast_local_estimate -- ROWS SEED
 //! ```
 //!
-//! The figures of docs/theory.md §10.1 come from `-- 1500 11` (fit) and `-- 1500 12` (check).
+//! The figures of docs/theory.md §10.1 come from `-- 1500 11` (fit) and `-- 1500 12` (check);
+//! the second table gives the smallest ratio per class of the CoR (where the calibration binds).
 use mdr_impact::model::impact::{Groups, Impact};
 use mdr_impact::report::stress;
 use mdr_impact::solvers::fast;
 use rayon::prelude::*;
 
 /// Per row and rtol: the error of one solve, its defect sum over `e`, the verified answer's
-/// error, its estimate, and whether it came from one solve.
-type Cell = (f64, f64, f64, f64, bool);
+/// error, its estimate, whether it came from one solve, and the true CoR.
+type Cell = (f64, f64, f64, f64, bool, f64);
+
+/// Classes of the CoR for the second table: `[lo, hi)`.
+const COR_CLASSES: [(f64, f64); 5] = [
+    (0.0, 0.01),
+    (0.01, 0.1),
+    (0.1, 0.5),
+    (0.5, 0.9),
+    (0.9, 1.01),
+];
 
 fn main() {
     let arg = |i: usize, d: u64| {
@@ -51,6 +61,7 @@ fn main() {
                         ((v.cor - truth) / truth).abs(),
                         v.cor_error_estimate?,
                         v.work.tight_checks == 0,
+                        truth,
                     ))
                 })
                 .collect()
@@ -78,5 +89,28 @@ fn main() {
             max(&|c| c.4.then_some(c.2 / c.3)),
             max(&|c| Some(c.2 / rtol)),
         );
+    }
+    let classes: Vec<String> = COR_CLASSES
+        .iter()
+        .map(|(lo, hi)| format!("e in [{lo}, {hi})"))
+        .collect();
+    println!(
+        "\nsmallest defect sum/err by CoR class\nrtol   | {}",
+        classes.join(" | ")
+    );
+    for (j, rtol) in rtols.iter().enumerate() {
+        let cells: Vec<_> = rows.iter().filter_map(|r| r[j]).collect();
+        let mins: Vec<String> = COR_CLASSES
+            .iter()
+            .map(|&(lo, hi)| {
+                let m = cells
+                    .iter()
+                    .filter(|c| c.0 > 0.0 && c.5 >= lo && c.5 < hi)
+                    .map(|c| c.1 / c.0)
+                    .fold(f64::INFINITY, f64::min);
+                format!("{m:.1}")
+            })
+            .collect();
+        println!("{rtol:.0e} | {}", mins.join(" | "));
     }
 }

@@ -18,6 +18,7 @@ fn timing(cor: f64, steps: [u64; 2], evaluations: [u64; 2]) -> RowTiming {
         cor_error: [1e-7, 1e-11],
         steps,
         evaluations,
+        tight: [cor < 0.1, false],
     }
 }
 
@@ -33,8 +34,9 @@ fn timing_table_reports_mean_work_per_group() {
     for (row, cell) in [
         ("| all rows | 3 |", "| 20.0 / 120 |"),
         ("| all rows | 3 |", "| 66.7 / 500 |"),
-        ("| strongly dissipative", "| 25.0 / 150 |"),
-        ("| nearly elastic", "| 10.0 / 60 |"),
+        ("| strongly dissipative", "| 25.0 / 150 | 100.0 % |"),
+        ("| nearly elastic", "| 10.0 / 60 | 0.0 % |"),
+        ("| all rows | 3 |", "| 20.0 / 120 | 66.7 % |"),
     ] {
         assert!(line_of(&table, row).contains(cell), "{cell} in\n{table}");
     }
@@ -47,8 +49,8 @@ fn timing_table_reports_mean_work_per_group() {
     let table = timing_table(&random, TimedRows::Random);
     assert!(table.starts_with("| random rows of the paper's range | n |"));
     let all = line_of(&table, "| all rows | 3 |");
-    assert!(all.contains("| 1.0e-7 | 20.0 / 120 |"), "{table}");
-    assert!(all.contains("| - | 66.7 / 500 |"), "{table}");
+    assert!(all.contains("| 1.0e-7 | 20.0 / 120 | 66.7 % |"), "{table}");
+    assert!(all.contains("| - | 66.7 / 500 | 0.0 % |"), "{table}");
     assert!(!table.contains("NaN"), "{table}");
 }
 
@@ -251,6 +253,8 @@ fn external_csv_has_work_columns() {
     assert_eq!(col("evaluations_rtol_1e-6"), "70");
     assert_eq!(col("steps_rtol_1e-10"), "45");
     assert_eq!(col("evaluations_rtol_1e-10"), "310");
+    assert_eq!(col("tight_check_rtol_1e-6"), "0");
+    assert_eq!(col("tight_check_rtol_1e-10"), "0");
     assert_eq!(col("cor_reference").parse::<f64>().unwrap(), 0.5);
 }
 

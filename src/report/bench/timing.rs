@@ -76,7 +76,9 @@ impl TimedRows {
                  dissipative corner; one core, CoR only, median of {TIMING_REPEATS} solves per \
                  row, one per pass over all rows; steps / evaluations: the mean attempted steps \
                  and force and history evaluations of one solve, which do not depend on the \
-                 machine; data: {data}):"
+                 machine; tight check: the share of rows whose answer needed a second, tighter \
+                 solve because the one-solve estimate was above rtol (docs/theory.md §9.8); \
+                 data: {data}):"
             ),
             TimedRows::Random => format!(
                 "The same on {n} random groups of the paper's range (`nu` uniform in \
@@ -128,6 +130,9 @@ pub struct RowTiming {
     pub steps: [u64; 2],
     /// Force and history evaluations of one solve at rtol 1e-6 and 1e-10 (`Work::evaluations`).
     pub evaluations: [u64; 2],
+    /// Whether the answer at rtol 1e-6 and 1e-10 came from the tight check (a second, tighter
+    /// solve: `Work::tight_checks > 0`) rather than from one solve.
+    pub tight: [bool; 2],
 }
 
 /// The two accuracies of [`RowTiming`].
@@ -203,6 +208,7 @@ struct Timed {
     cor: [f64; 2],
     steps: [u64; 2],
     evaluations: [u64; 2],
+    tight: [bool; 2],
 }
 
 impl Timed {
@@ -214,6 +220,7 @@ impl Timed {
             cor_error,
             steps: self.steps,
             evaluations: self.evaluations,
+            tight: self.tight,
         }
     }
 }
@@ -239,6 +246,7 @@ fn time_rows(rows: &[crate::report::validate::ExternalRow], tick: &dyn Fn()) -> 
             cor: [f64::NAN; 2],
             steps: [0; 2],
             evaluations: [0; 2],
+            tight: [false; 2],
         })
         .collect();
     for _ in 0..TIMING_REPEATS {
@@ -250,6 +258,7 @@ fn time_rows(rows: &[crate::report::validate::ExternalRow], tick: &dyn Fn()) -> 
                 out[i].cor[k] = o.cor;
                 out[i].steps[k] = o.work.steps;
                 out[i].evaluations[k] = o.work.evaluations;
+                out[i].tight[k] = o.work.tight_checks > 0;
             }
             tick();
         }
@@ -311,6 +320,8 @@ pub fn write_timing_csv(path: &Path, rows: &[RowTiming], kind: TimedRows) -> Res
             "evaluations_rtol_1e-6",
             "steps_rtol_1e-10",
             "evaluations_rtol_1e-10",
+            "tight_check_rtol_1e-6",
+            "tight_check_rtol_1e-10",
         ])
         .map_err(io)?;
         for t in rows {
@@ -330,7 +341,8 @@ pub fn write_timing_csv(path: &Path, rows: &[RowTiming], kind: TimedRows) -> Res
                 .chain(
                     [t.steps[0], t.evaluations[0], t.steps[1], t.evaluations[1]]
                         .map(|n| n.to_string()),
-                ),
+                )
+                .chain(t.tight.map(|b| u8::from(b).to_string())),
             )
             .map_err(io)?;
         }
@@ -347,6 +359,8 @@ pub(super) struct GroupStats {
     pub(super) max_error: [f64; 2],
     pub(super) steps: [f64; 2],
     pub(super) evaluations: [f64; 2],
+    /// Share of the rows answered by the tight check.
+    pub(super) tight: [f64; 2],
 }
 
 /// [`GroupStats`] of every group of [`timing_groups`] that has rows.
@@ -367,6 +381,7 @@ pub(super) fn group_stats(rows: &[RowTiming]) -> Vec<GroupStats> {
         let max_err = |k: usize| sel.iter().map(|t| t.cor_error[k]).fold(f64::NAN, f64::max);
         let steps = |k: usize| sel.iter().map(|t| t.steps[k] as f64).sum::<f64>() / n;
         let evals = |k: usize| sel.iter().map(|t| t.evaluations[k] as f64).sum::<f64>() / n;
+        let tight = |k: usize| sel.iter().filter(|t| t.tight[k]).count() as f64 / n;
         out.push(GroupStats {
             name,
             n: sel.len(),
@@ -374,6 +389,7 @@ pub(super) fn group_stats(rows: &[RowTiming]) -> Vec<GroupStats> {
             max_error: [max_err(0), max_err(1)],
             steps: [steps(0), steps(1)],
             evaluations: [evals(0), evals(1)],
+            tight: [tight(0), tight(1)],
         });
     }
     out
@@ -385,7 +401,7 @@ pub(super) fn group_stats(rows: &[RowTiming]) -> Vec<GroupStats> {
 pub fn timing_table(rows: &[RowTiming], kind: TimedRows) -> String {
     let err = kind.error_header();
     let mut s = format!(
-        "| {} | n | rtol 1e-6: median time | {err} | steps / evaluations | rtol 1e-10: median time | {err} | steps / evaluations |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n",
+        "| {} | n | rtol 1e-6: median time | {err} | steps / evaluations | tight check | rtol 1e-10: median time | {err} | steps / evaluations | tight check |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n",
         kind.title()
     );
     for g in group_stats(rows) {
@@ -398,10 +414,11 @@ pub fn timing_table(rows: &[RowTiming], kind: TimedRows) -> String {
                     format!("{e:.1e}")
                 };
                 format!(
-                    "{} | {e} | {:.1} / {:.0}",
+                    "{} | {e} | {:.1} / {:.0} | {:.1} %",
                     fmt_time(g.median[k]),
                     g.steps[k],
-                    g.evaluations[k]
+                    g.evaluations[k],
+                    100.0 * g.tight[k]
                 )
             })
             .collect();
