@@ -18,6 +18,7 @@ use crate::solvers::{fast, theory};
 use crate::solvers::{solve, SolveOptions, SolverKind};
 
 mod baseline;
+mod paired;
 mod report;
 mod scipy;
 mod targets;
@@ -26,6 +27,7 @@ mod tests;
 mod timing;
 
 pub use baseline::*;
+pub use paired::*;
 pub use report::*;
 pub use scipy::*;
 pub use targets::*;

@@ -95,8 +95,10 @@ pub fn summary(
             "\n`fast` at rtol 1e-6 on the general materials of VALIDATION.md section 1c (one core, \
              CoR only), each beside the standard solids of the random sample in the same CoR group \
              and beside those within {COR_BAND} of its CoR (a group spans CoRs whose cost differs \
-             more than the terms': its median sits near the group's cheap end); each ratio is of \
-             the median times:\n"
+             more than the terms': its median sits near the group's cheap end). For the ratios the \
+             case is timed in alternation with those standard solids (at most {PAIRED_MAX_ROWS} of \
+             them; {PAIRED_PASSES} passes, each solving the case and one standard solid in turn, \
+             so both see the same load of the machine), and each ratio is of the two medians:\n"
         );
         s.push_str(&general_timing_table(general, random));
     }
@@ -194,6 +196,9 @@ pub fn run_full(opts: &BenchOptions, tick: &dyn Fn()) -> Result<BenchReport> {
             timed.push((kind, kind.time(tick)?));
         }
         general = general_timing(opts.budget)?;
+        if let Some(random) = random_rows_of(&timed) {
+            pair_with_standard_solids(&mut general, random)?;
+        }
         euler_general = Some(general_euler_speedup(opts.budget)?);
     }
     let fit = fit_timing()?;

@@ -74,44 +74,44 @@ pub fn targets(
     s
 }
 
-/// Median time (s), mean steps and mean evaluations at rtol 1e-6 of the selected rows, with
-/// their number; `None` for none.
-fn median_work(sel: &[&RowTiming]) -> Option<(f64, f64, f64, usize)> {
+/// Mean steps and mean evaluations at rtol 1e-6 of the selected rows; `None` for none.
+fn mean_work(sel: &[&RowTiming]) -> Option<(f64, f64)> {
     if sel.is_empty() {
         return None;
     }
-    let mut v: Vec<f64> = sel.iter().map(|t| t.seconds[0]).collect();
-    v.sort_by(|a, b| a.total_cmp(b));
     let n = sel.len() as f64;
     let steps = sel.iter().map(|t| t.steps[0] as f64).sum::<f64>() / n;
     let evals = sel.iter().map(|t| t.evaluations[0] as f64).sum::<f64>() / n;
-    Some((v[v.len() / 2], steps, evals, sel.len()))
+    Some((steps, evals))
 }
 
-/// The standard solid of the random sample (`random`) in the CoR group of `r`: the group's
-/// name, median time (s), mean steps and evaluations at rtol 1e-6.
+/// The standard solids of the random sample (`random`) in the CoR group of `r`: the group's
+/// name, `r` timed in alternation with them ([`GeneralTiming::group`]), and their mean steps
+/// and evaluations at rtol 1e-6.
 fn same_group(
     r: &GeneralTiming,
     random: Option<&[RowTiming]>,
-) -> Option<(&'static str, f64, f64, f64)> {
+) -> Option<(&'static str, Paired, f64, f64)> {
     let (name, member) = cor_groups().into_iter().find(|(_, member)| member(r.cor))?;
     let sel: Vec<&RowTiming> = random?.iter().filter(|t| member(t.row.cor)).collect();
-    let (t, steps, evals, _) = median_work(&sel)?;
-    Some((name, t, steps, evals))
+    let (steps, evals) = mean_work(&sel)?;
+    Some((name, r.group?, steps, evals))
 }
 
 /// Half width of the CoR band of [`same_cor`]: a group of [`cor_groups`] spans CoRs whose cost
 /// differs by more than the terms do (the dissipative group's median sits near its elastic end).
 pub const COR_BAND: f64 = 0.05;
 
-/// The standard solids of the random sample whose CoR lies within [`COR_BAND`] of `r`'s: median
-/// time (s), mean steps and evaluations at rtol 1e-6, and their number.
-fn same_cor(r: &GeneralTiming, random: Option<&[RowTiming]>) -> Option<(f64, f64, f64, usize)> {
+/// The standard solids of the random sample whose CoR lies within [`COR_BAND`] of `r`'s: `r`
+/// timed in alternation with them ([`GeneralTiming::band`]) and their mean steps and
+/// evaluations at rtol 1e-6.
+fn same_cor(r: &GeneralTiming, random: Option<&[RowTiming]>) -> Option<(Paired, f64, f64)> {
     let sel: Vec<&RowTiming> = random?
         .iter()
         .filter(|t| (t.row.cor - r.cor).abs() <= COR_BAND)
         .collect();
-    median_work(&sel)
+    let (steps, evals) = mean_work(&sel)?;
+    Some((r.band?, steps, evals))
 }
 
 /// Design target: `fast` at rtol 1e-6 on a real polymer of at least 30 terms
@@ -126,13 +126,15 @@ pub fn general_targets(rows: &[GeneralTiming], random: Option<&[RowTiming]>) -> 
     rows.iter()
         .filter(|r| r.terms >= 30 && crate::report::catalogue::POLYMERS.iter().any(|p| p.id == r.id))
         .filter_map(|r| {
-            let (name, t, _, _) = same_group(r, random)?;
-            let x = r.seconds / t;
-            let band = same_cor(r, random).map_or(String::new(), |(tb, ..)| {
+            let (name, g, _, _) = same_group(r, random)?;
+            let x = g.ratio();
+            let band = same_cor(r, random).map_or(String::new(), |(b, ..)| {
                 format!(
-                    "; {:.1}x the standard solids within {COR_BAND} of its CoR ({})",
-                    r.seconds / tb,
-                    fmt_time(tb)
+                    "; {:.1}x the {} standard solids within {COR_BAND} of its CoR ({} against {})",
+                    b.ratio(),
+                    b.rows,
+                    fmt_time(b.case),
+                    fmt_time(b.standard)
                 )
             });
             let verdict = if x <= TARGET_GENERAL_RATIO {
@@ -143,37 +145,44 @@ pub fn general_targets(rows: &[GeneralTiming], random: Option<&[RowTiming]>) -> 
             Some(format!(
                 "the {}-term real polymer `{}` at rtol 1e-6 in at most {TARGET_GENERAL_RATIO:.0}x the \
                  median time of the standard solid in its CoR group ({name}): {verdict} ({x:.1}x: {} \
-                 against {}{band})",
+                 against {}, timed in alternation with {} of the group's rows{band})",
                 r.terms,
                 r.id,
-                fmt_time(r.seconds),
-                fmt_time(t)
+                fmt_time(g.case),
+                fmt_time(g.standard),
+                g.rows
             ))
         })
         .collect()
 }
 
-/// Markdown table of [`general_timing`], each case beside the standard solid of the random
+/// Markdown table of [`general_timing`], each case beside the standard solids of the random
 /// sample in the same CoR group (`random`: the rows of [`TimedRows::Random`], if timed) and
-/// beside those within [`COR_BAND`] of its CoR, with the ratios of the median times.
+/// beside those within [`COR_BAND`] of its CoR, timed in alternation with them
+/// ([`pair_with_standard_solids`]), with the ratios of the median times.
 pub fn general_timing_table(rows: &[GeneralTiming], random: Option<&[RowTiming]>) -> String {
     let mut s = format!(
-        "| case | G_eq terms | CoR | median time | steps / evaluations | without the merge of far terms (`fast::reduce`) | standard solid, same CoR group (random rows): median time, steps / evaluations | ratio | standard solids within {COR_BAND} of the CoR (random rows): n, median time, steps / evaluations | ratio |\n\
+        "| case | G_eq terms | CoR | median time | steps / evaluations | without the merge of far terms (`fast::reduce`) | standard solids of the same CoR group (random rows), timed in alternation with the case: rows, their median time / the case's, steps / evaluations | ratio | the same for the standard solids within {COR_BAND} of the CoR | ratio |\n\
          | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n",
     );
     for r in rows {
+        let cell = |p: &Paired, steps: f64, evals: f64| {
+            format!(
+                "{}, {} / {}, {steps:.1} / {evals:.0}",
+                p.rows,
+                fmt_time(p.standard),
+                fmt_time(p.case)
+            )
+        };
         let (std_text, ratio) = match same_group(r, random) {
-            Some((name, t, steps, evals)) => (
-                format!("{name}: {}, {steps:.1} / {evals:.0}", fmt_time(t)),
-                format!("{:.1}", r.seconds / t),
+            Some((name, p, steps, evals)) => (
+                format!("{name}: {}", cell(&p, steps, evals)),
+                format!("{:.1}", p.ratio()),
             ),
             None => ("-".to_string(), "-".to_string()),
         };
         let (band_text, band_ratio) = match same_cor(r, random) {
-            Some((t, steps, evals, n)) => (
-                format!("{n}: {}, {steps:.1} / {evals:.0}", fmt_time(t)),
-                format!("{:.1}", r.seconds / t),
-            ),
+            Some((p, steps, evals)) => (cell(&p, steps, evals), format!("{:.1}", p.ratio())),
             None => ("-".to_string(), "-".to_string()),
         };
         let _ = writeln!(

@@ -54,6 +54,15 @@ fn timing_table_reports_mean_work_per_group() {
     assert!(!table.contains("NaN"), "{table}");
 }
 
+/// A paired timing of `rows` standard solids.
+fn paired(rows: usize, case: f64, standard: f64) -> Option<Paired> {
+    Some(Paired {
+        rows,
+        case,
+        standard,
+    })
+}
+
 #[test]
 fn general_timing_table_compares_within_the_cor_group() {
     let random = [
@@ -70,6 +79,8 @@ fn general_timing_table_compares_within_the_cor_group() {
             steps: 40,
             evaluations: 250,
             unreduced_seconds: 6e-5,
+            group: paired(1, 3.3e-5, 1.1e-5),
+            band: paired(1, 3.2e-5, 0.8e-5),
         },
         GeneralTiming {
             id: "g-dissipative",
@@ -79,32 +90,25 @@ fn general_timing_table_compares_within_the_cor_group() {
             steps: 35,
             evaluations: 200,
             unreduced_seconds: 4e-5,
+            group: paired(2, 2e-5, 1e-5),
+            band: None,
         },
     ];
     let table = general_timing_table(&general, Some(&random));
-    // the nearly elastic group has one row (1e-5 s): ratio 3, and that row (0.95) lies within
-    // 0.05 of the CoR 0.97; the dissipative group two rows, median the upper one (1e-5 s), mean
-    // work 25.0 / 150: ratio 2, and neither of them (0.5, 0.4) lies within 0.05 of the CoR 0.6
+    // the ratios are the paired ones (3.3 / 1.1 and 3.2 / 0.8), the work the mean over the
+    // random rows of the group (one row, 0.95, also within 0.05 of 0.97); the dissipative
+    // group's two rows work 25.0 / 150 on average, and its case has no band rows
     let e = line_of(&table, "| g-elastic | 30 |");
     assert!(
-        e.contains("nearly elastic (e >= 0.9)")
-            && e.contains("| 3.0 |")
-            && e.ends_with("| 1: 10.0 µs, 10.0 / 60 | 3.0 |"),
+        e.contains("| nearly elastic (e >= 0.9): 1, 11.0 µs / 33.0 µs, 10.0 / 60 | 3.0 |")
+            && e.ends_with("| 1, 8.0 µs / 32.0 µs, 10.0 / 60 | 4.0 |"),
         "{table}"
     );
     let d = line_of(&table, "| g-dissipative | 62 |");
     assert!(
-        d.contains("25.0 / 150 | 2.0 |") && d.ends_with("| - | - |"),
+        d.contains(": 2, 10.0 µs / 20.0 µs, 25.0 / 150 | 2.0 |") && d.ends_with("| - | - |"),
         "{table}"
     );
-    // a row within the band of the dissipative case (slower: 3e-5 s) enters its group too
-    let mut wider = random.to_vec();
-    let mut near = timing(0.62, [40, 100], [300, 800]);
-    near.seconds[0] = 3e-5;
-    wider.push(near);
-    let table = general_timing_table(&general, Some(&wider));
-    let d = line_of(&table, "| g-dissipative | 62 |");
-    assert!(d.ends_with("| 1: 30.0 µs, 40.0 / 300 | 0.7 |"), "{table}");
     // without the random sample: dashes
     let table = general_timing_table(&general, None);
     assert!(
@@ -122,17 +126,20 @@ fn line_of(table: &str, prefix: &str) -> String {
 }
 
 /// The 2x target applies to the real polymers of at least 30 terms only, each against the
-/// standard solid of its own CoR group, and lands in the target list.
+/// standard solids of its own CoR group timed in alternation with it, and lands in the target
+/// list with the ratio against the standard solids of about its CoR.
 #[test]
 fn general_targets_compare_polymers_with_their_group() {
-    let g = |id: &'static str, terms, cor, seconds| GeneralTiming {
+    let g = |id: &'static str, terms, cor, case: f64| GeneralTiming {
         id,
         terms,
         cor,
-        seconds,
+        seconds: 2.0 * case,
         steps: 40,
         evaluations: 300,
-        unreduced_seconds: 2.0 * seconds,
+        unreduced_seconds: 4.0 * case,
+        group: paired(2, case, 10e-6),
+        band: paired(1, case, 12e-6),
     };
     let rows = [
         g("polyisobutylene", 30, 0.28, 18e-6),
@@ -148,7 +155,10 @@ fn general_targets_compare_polymers_with_their_group() {
     assert_eq!(t.len(), 1, "{t:?}");
     assert!(t[0].contains("`polyisobutylene`"), "{}", t[0]);
     assert!(
-        t[0].contains(": met (1.8x: 18.0 µs against 10.0 µs; 1.8x the standard solids within 0.05 of its CoR (10.0 µs))"),
+        t[0].contains(
+            ": met (1.8x: 18.0 µs against 10.0 µs, timed in alternation with 2 of the group's \
+             rows; 1.5x the 1 standard solids within 0.05 of its CoR (18.0 µs against 12.0 µs))"
+        ),
         "{}",
         t[0]
     );
@@ -156,6 +166,10 @@ fn general_targets_compare_polymers_with_their_group() {
     let t = general_targets(&slow, Some(&random));
     assert!(t[0].contains("**not met** (3.5x"), "{}", t[0]);
     assert!(general_targets(&rows, None).is_empty());
+    // not timed in alternation: no verdict
+    let mut unpaired = slow.clone();
+    unpaired[0].group = None;
+    assert!(general_targets(&unpaired, Some(&random)).is_empty());
     let text = targets(&[], None, None, &t);
     assert!(text.contains("- the 30-term real polymer"), "{text}");
 }
@@ -430,4 +444,24 @@ fn scipy_rows_and_text() {
         "{t}"
     );
     assert_eq!(ScipyComparison::NotMeasured("x".into()).ratio(), None);
+}
+
+/// The alternation solves the case once per row and pass: positive medians, one per side; no
+/// rows, no timing.
+#[test]
+fn alternate_times_case_and_rows() {
+    let p = |p2, p3| {
+        crate::model::impact::Impact::from_groups(
+            crate::model::impact::Groups::new(0.3, p2, p3).unwrap(),
+        )
+        .unwrap()
+        .canonical_relaxation()
+    };
+    let case = p(0.1, 1.0);
+    let got = alternate(&case, &[p(1.0, 0.1), p(0.01, 3.0)])
+        .unwrap()
+        .unwrap();
+    assert_eq!(got.rows, 2);
+    assert!(got.case > 0.0 && got.standard > 0.0 && got.ratio().is_finite());
+    assert_eq!(alternate(&case, &[]).unwrap(), None);
 }

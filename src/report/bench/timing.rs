@@ -471,6 +471,11 @@ pub struct GeneralTiming {
     /// Median wall time per impact without the merge of terms outside the contact window
     /// (`fast::impact_unreduced`), same run (s).
     pub unreduced_seconds: f64,
+    /// Timed in alternation with the standard solids of its CoR group in the random sample
+    /// ([`pair_with_standard_solids`]; `None` before that or without rows).
+    pub group: Option<Paired>,
+    /// Timed in alternation with the standard solids within [`COR_BAND`] of its CoR.
+    pub band: Option<Paired>,
 }
 
 /// Time `fast` (CoR only, one core, rtol 1e-6) on every general-material case: the median over
@@ -499,6 +504,8 @@ pub fn general_timing(budget: f64) -> Result<Vec<GeneralTiming>> {
                 seconds,
                 steps: out.work.steps,
                 evaluations: out.work.evaluations,
+                group: None,
+                band: None,
             })
         })
         .collect()
