@@ -330,11 +330,14 @@ fn best_group(
         if avail <= n || avail - n <= best.0.saturating_sub(best.1) {
             break;
         }
-        if bound(group(n + 1), n) > limit {
+        // only a group of at least `first` terms saves more than the best so far; the bound
+        // grows with the group, so if that one is over the limit every larger one is too
+        let first = (n + 1).max(best.0.saturating_sub(best.1) + n + 1);
+        if first > avail || bound(group(first), n) > limit {
             continue;
         }
-        // largest m in [n + 1, avail] within the limit
-        let (mut lo, mut hi) = (n + 1, avail);
+        // largest m in [first, avail] within the limit
+        let (mut lo, mut hi) = (first, avail);
         while lo < hi {
             let mid = (lo + hi).div_ceil(2);
             if bound(group(mid), n) <= limit {
