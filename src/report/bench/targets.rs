@@ -98,8 +98,9 @@ fn same_group(
     Some((name, r.group?, steps, evals))
 }
 
-/// Half width of the CoR band of [`same_cor`]: a group of [`cor_groups`] spans CoRs whose cost
-/// differs by more than the terms do (the dissipative group's median sits near its elastic end).
+/// Half width of the CoR band in which the general materials are also compared with the
+/// standard solids: a group of [`cor_groups`] spans CoRs whose cost differs by more than the
+/// terms do (the dissipative group's median sits near its elastic end).
 pub const COR_BAND: f64 = 0.05;
 
 /// The standard solids of the random sample whose CoR lies within [`COR_BAND`] of `r`'s: `r`
