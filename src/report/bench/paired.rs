@@ -25,6 +25,8 @@ pub struct Paired {
     pub case: f64,
     /// Median over the rows of each row's median time (s).
     pub standard: f64,
+    /// Mean attempted steps and mean evaluations of one solve of the rows.
+    pub work: (f64, f64),
 }
 
 impl Paired {
@@ -44,14 +46,19 @@ pub fn alternate(case: &Prony, rows: &[Prony]) -> Result<Option<Paired>> {
     let rtol = TIMING_RTOLS[0];
     let mut case_times = Vec::with_capacity(rows.len() * PAIRED_PASSES);
     let mut row_times = vec![Vec::with_capacity(PAIRED_PASSES); rows.len()];
-    for _ in 0..PAIRED_PASSES {
+    let (mut steps, mut evaluations) = (0u64, 0u64);
+    for pass in 0..PAIRED_PASSES {
         for (p, times) in rows.iter().zip(&mut row_times) {
             let t0 = Instant::now();
             fast::impact(case, rtol, false)?;
             case_times.push(t0.elapsed().as_secs_f64());
             let t0 = Instant::now();
-            fast::impact(p, rtol, false)?;
+            let o = fast::impact(p, rtol, false)?;
             times.push(t0.elapsed().as_secs_f64());
+            if pass == 0 {
+                steps += o.work.steps;
+                evaluations += o.work.evaluations;
+            }
         }
     }
     let median = |v: &mut Vec<f64>| {
@@ -59,10 +66,12 @@ pub fn alternate(case: &Prony, rows: &[Prony]) -> Result<Option<Paired>> {
         v[v.len() / 2]
     };
     let mut per_row: Vec<f64> = row_times.iter_mut().map(median).collect();
+    let n = rows.len() as f64;
     Ok(Some(Paired {
         rows: rows.len(),
         case: median(&mut case_times),
         standard: median(&mut per_row),
+        work: (steps as f64 / n, evaluations as f64 / n),
     }))
 }
 

@@ -89,7 +89,6 @@ pub fn summary(
         s.push_str(&timing_table(rows, *kind));
     }
     if !general.is_empty() {
-        let random = random_rows_of(timed);
         let _ = writeln!(
             s,
             "\n`fast` at rtol 1e-6 on the general materials of VALIDATION.md section 1c (one core, \
@@ -98,9 +97,10 @@ pub fn summary(
              more than the terms': its median sits near the group's cheap end). For the ratios the \
              case is timed in alternation with those standard solids (at most {PAIRED_MAX_ROWS} of \
              them; {PAIRED_PASSES} passes, each solving the case and one standard solid in turn, \
-             so both see the same load of the machine), and each ratio is of the two medians:\n"
+             so both see the same load of the machine), and each ratio is of the two medians; \
+             steps / evaluations: the mean work of one solve of those standard solids:\n"
         );
-        s.push_str(&general_timing_table(general, random));
+        s.push_str(&general_timing_table(general));
     }
     if let Some((rows, secs)) = batch {
         let _ = writeln!(
@@ -289,9 +289,8 @@ impl BenchReport {
         for (kind, rows) in &self.timed {
             let _ = writeln!(s, "{}", timing_table(rows, *kind));
         }
-        let random = random_rows_of(&self.timed);
         if !self.options.quick {
-            let _ = writeln!(s, "{}", general_timing_table(&self.general, random));
+            let _ = writeln!(s, "{}", general_timing_table(&self.general));
         }
         if let Some(r) = &self.euler_general {
             s.push_str(&general_euler_text(r));
@@ -324,7 +323,7 @@ impl BenchReport {
     /// The entries of the design targets beyond the row timings: the polymers against the
     /// standard solid and `fast` against the SciPy script.
     fn general_lines(&self) -> Vec<String> {
-        let mut v = general_targets(&self.general, random_rows_of(&self.timed));
+        let mut v = general_targets(&self.general);
         v.push(match self.scipy.ratio() {
             Some(x) => format!(
                 "`fast` against the SciPy script a user would write (DOP853, rtol {SCIPY_RTOL:.0e}, \

@@ -74,46 +74,17 @@ pub fn targets(
     s
 }
 
-/// Mean steps and mean evaluations at rtol 1e-6 of the selected rows; `None` for none.
-fn mean_work(sel: &[&RowTiming]) -> Option<(f64, f64)> {
-    if sel.is_empty() {
-        return None;
-    }
-    let n = sel.len() as f64;
-    let steps = sel.iter().map(|t| t.steps[0] as f64).sum::<f64>() / n;
-    let evals = sel.iter().map(|t| t.evaluations[0] as f64).sum::<f64>() / n;
-    Some((steps, evals))
-}
-
-/// The standard solids of the random sample (`random`) in the CoR group of `r`: the group's
-/// name, `r` timed in alternation with them ([`GeneralTiming::group`]), and their mean steps
-/// and evaluations at rtol 1e-6.
-fn same_group(
-    r: &GeneralTiming,
-    random: Option<&[RowTiming]>,
-) -> Option<(&'static str, Paired, f64, f64)> {
-    let (name, member) = cor_groups().into_iter().find(|(_, member)| member(r.cor))?;
-    let sel: Vec<&RowTiming> = random?.iter().filter(|t| member(t.row.cor)).collect();
-    let (steps, evals) = mean_work(&sel)?;
-    Some((name, r.group?, steps, evals))
+/// The CoR group of `r` (its name) and `r` timed in alternation with the standard solids of the
+/// random sample in it ([`GeneralTiming::group`]).
+fn same_group(r: &GeneralTiming) -> Option<(&'static str, Paired)> {
+    let (name, _) = cor_groups().into_iter().find(|(_, member)| member(r.cor))?;
+    Some((name, r.group?))
 }
 
 /// Half width of the CoR band in which the general materials are also compared with the
 /// standard solids: a group of [`cor_groups`] spans CoRs whose cost differs by more than the
 /// terms do (the dissipative group's median sits near its elastic end).
 pub const COR_BAND: f64 = 0.05;
-
-/// The standard solids of the random sample whose CoR lies within [`COR_BAND`] of `r`'s: `r`
-/// timed in alternation with them ([`GeneralTiming::band`]) and their mean steps and
-/// evaluations at rtol 1e-6.
-fn same_cor(r: &GeneralTiming, random: Option<&[RowTiming]>) -> Option<(Paired, f64, f64)> {
-    let sel: Vec<&RowTiming> = random?
-        .iter()
-        .filter(|t| (t.row.cor - r.cor).abs() <= COR_BAND)
-        .collect();
-    let (steps, evals) = mean_work(&sel)?;
-    Some((r.band?, steps, evals))
-}
 
 /// Design target: `fast` at rtol 1e-6 on a real polymer of at least 30 terms
 /// ([`crate::report::catalogue::POLYMERS`]) takes at most this multiple of the median time of the
@@ -123,13 +94,13 @@ pub const TARGET_GENERAL_RATIO: f64 = 2.0;
 /// The target [`TARGET_GENERAL_RATIO`] for the real polymers of at least 30 `G_eq` terms among
 /// `rows`, each beside the standard solid of its CoR group in `random` (one list entry per
 /// polymer; none without the random sample).
-pub fn general_targets(rows: &[GeneralTiming], random: Option<&[RowTiming]>) -> Vec<String> {
+pub fn general_targets(rows: &[GeneralTiming]) -> Vec<String> {
     rows.iter()
         .filter(|r| r.terms >= 30 && crate::report::catalogue::POLYMERS.iter().any(|p| p.id == r.id))
         .filter_map(|r| {
-            let (name, g, _, _) = same_group(r, random)?;
+            let (name, g) = same_group(r)?;
             let x = g.ratio();
-            let band = same_cor(r, random).map_or(String::new(), |(b, ..)| {
+            let band = r.band.map_or(String::new(), |b| {
                 format!(
                     "; {:.1}x the {} standard solids within {COR_BAND} of its CoR ({} against {})",
                     b.ratio(),
@@ -161,29 +132,28 @@ pub fn general_targets(rows: &[GeneralTiming], random: Option<&[RowTiming]>) -> 
 /// sample in the same CoR group (`random`: the rows of [`TimedRows::Random`], if timed) and
 /// beside those within [`COR_BAND`] of its CoR, timed in alternation with them
 /// ([`pair_with_standard_solids`]), with the ratios of the median times.
-pub fn general_timing_table(rows: &[GeneralTiming], random: Option<&[RowTiming]>) -> String {
+pub fn general_timing_table(rows: &[GeneralTiming]) -> String {
     let mut s = format!(
         "| case | G_eq terms | CoR | median time | steps / evaluations | without the merge of far terms (`fast::reduce`) | standard solids of the same CoR group (random rows), timed in alternation with the case: rows, their median time / the case's, steps / evaluations | ratio | the same for the standard solids within {COR_BAND} of the CoR | ratio |\n\
          | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n",
     );
     for r in rows {
-        let cell = |p: &Paired, steps: f64, evals: f64| {
+        let cell = |p: &Paired| {
             format!(
-                "{}, {} / {}, {steps:.1} / {evals:.0}",
+                "{}, {} / {}, {:.1} / {:.0}",
                 p.rows,
                 fmt_time(p.standard),
-                fmt_time(p.case)
+                fmt_time(p.case),
+                p.work.0,
+                p.work.1
             )
         };
-        let (std_text, ratio) = match same_group(r, random) {
-            Some((name, p, steps, evals)) => (
-                format!("{name}: {}", cell(&p, steps, evals)),
-                format!("{:.1}", p.ratio()),
-            ),
+        let (std_text, ratio) = match same_group(r) {
+            Some((name, p)) => (format!("{name}: {}", cell(&p)), format!("{:.1}", p.ratio())),
             None => ("-".to_string(), "-".to_string()),
         };
-        let (band_text, band_ratio) = match same_cor(r, random) {
-            Some((p, steps, evals)) => (cell(&p, steps, evals), format!("{:.1}", p.ratio())),
+        let (band_text, band_ratio) = match &r.band {
+            Some(p) => (cell(p), format!("{:.1}", p.ratio())),
             None => ("-".to_string(), "-".to_string()),
         };
         let _ = writeln!(
