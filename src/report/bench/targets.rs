@@ -92,8 +92,9 @@ pub const COR_BAND: f64 = 0.05;
 pub const TARGET_GENERAL_RATIO: f64 = 2.0;
 
 /// The target [`TARGET_GENERAL_RATIO`] for the real polymers of at least 30 `G_eq` terms among
-/// `rows`, each beside the standard solid of its CoR group in `random` (one list entry per
-/// polymer; none without the random sample).
+/// `rows`, each timed in alternation with the standard solids of its CoR group
+/// ([`GeneralTiming::group`]; one list entry per paired polymer, none without the random
+/// sample).
 pub fn general_targets(rows: &[GeneralTiming]) -> Vec<String> {
     rows.iter()
         .filter(|r| r.terms >= 30 && crate::report::catalogue::POLYMERS.iter().any(|p| p.id == r.id))
@@ -129,9 +130,9 @@ pub fn general_targets(rows: &[GeneralTiming]) -> Vec<String> {
 }
 
 /// Markdown table of [`general_timing`], each case beside the standard solids of the random
-/// sample in the same CoR group (`random`: the rows of [`TimedRows::Random`], if timed) and
-/// beside those within [`COR_BAND`] of its CoR, timed in alternation with them
-/// ([`pair_with_standard_solids`]), with the ratios of the median times.
+/// sample ([`TimedRows::Random`]) in the same CoR group and beside those within [`COR_BAND`] of
+/// its CoR, timed in alternation with them ([`pair_with_standard_solids`]; "-" where a case was
+/// not paired), with the ratios of the median times.
 pub fn general_timing_table(rows: &[GeneralTiming]) -> String {
     let mut s = format!(
         "| case | G_eq terms | CoR | median time | steps / evaluations | without the merge of far terms (`fast::reduce`) | standard solids of the same CoR group (random rows), timed in alternation with the case: rows, their median time / the case's, steps / evaluations | ratio | the same for the standard solids within {COR_BAND} of the CoR | ratio |\n\
