@@ -9,7 +9,7 @@ use super::*;
 pub fn summary(
     points: &[BenchPoint],
     machine: &str,
-    batch: Option<(usize, f64)>,
+    batch: Option<BatchTiming>,
     timed: &[(TimedRows, Vec<RowTiming>)],
     general: &[GeneralTiming],
     general_lines: &[String],
@@ -102,12 +102,15 @@ pub fn summary(
         );
         s.push_str(&general_timing_table(general));
     }
-    if let Some((rows, secs)) = batch {
+    if let Some(b) = batch {
         let _ = writeln!(
             s,
             "\n`mdr-impact cor --input` path (the file's bytes parsed by `batch::parse_rows`, solved by \
              `batch::solve_rows`, formatted by `batch::write_results` into memory; default solver and \
-             rtol 1e-6, all cores): {rows} random rows of the paper's range in {secs:.2} s."
+             rtol 1e-6, all cores): {} random rows of the paper's range in {:.2} s.{}",
+            b.rows,
+            b.seconds,
+            b.solves_text()
         );
     }
     if !timed.is_empty() {
@@ -115,6 +118,68 @@ pub fn summary(
         s.push_str(&targets(timed, speedup(points), batch, general_lines));
     }
     s
+}
+
+/// Alternating passes of [`batch_solves`] (each: the verified solves, then the unverified).
+pub const BATCH_SOLVE_PASSES: usize = 3;
+
+/// The `cor --input` path timed by [`run_full`] on random rows of the paper's range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BatchTiming {
+    /// Rows.
+    pub rows: usize,
+    /// Wall time of the whole path: parse, solve, format (s).
+    pub seconds: f64,
+    /// The solves alone on the same rows ([`batch_solves`]): verified `fast` and one
+    /// unverified solve per row (s).
+    pub solves: Option<(f64, f64)>,
+}
+
+impl BatchTiming {
+    /// The sentence on [`BatchTiming::solves`] (empty without them).
+    pub fn solves_text(&self) -> String {
+        match self.solves {
+            Some((verified, one)) => format!(
+                " The solves alone (`fast` at rtol 1e-6, all cores, median of {BATCH_SOLVE_PASSES} \
+                 alternating passes): {verified:.2} s verified (`fast` as `cor --input` calls \
+                 it), {one:.2} s with one unverified solve per row (`fast::impact_unverified`), \
+                 the least any verification can cost ({:.2} of the verified time).",
+                one / verified
+            ),
+            None => String::new(),
+        }
+    }
+}
+
+/// The solves of `rows` alone, in parallel (rayon, all cores), at rtol 1e-6, CoR only: verified
+/// `fast` as `cor --input` calls it and one unverified solve per row, each timed over the
+/// whole set in [`BATCH_SOLVE_PASSES`] passes that alternate the two; the median wall time of
+/// each (s).
+pub fn batch_solves(rows: &[crate::apps::batch::Row]) -> Result<(f64, f64)> {
+    use rayon::prelude::*;
+    use std::time::Instant;
+    let rtol = TIMING_RTOLS[0];
+    let relax = |r: &crate::apps::batch::Row| -> Result<crate::model::material::Prony> {
+        Ok(crate::model::impact::Impact::from_groups(r.groups)?.canonical_relaxation())
+    };
+    let mut times = [Vec::new(), Vec::new()];
+    for _ in 0..BATCH_SOLVE_PASSES {
+        let t0 = Instant::now();
+        rows.par_iter()
+            .map(|r| fast::impact_with(None, &relax(r)?, rtol, false, false))
+            .collect::<Result<Vec<_>>>()?;
+        times[0].push(t0.elapsed().as_secs_f64());
+        let t0 = Instant::now();
+        rows.par_iter()
+            .map(|r| fast::impact_unverified(&relax(r)?, rtol, false))
+            .collect::<Result<Vec<_>>>()?;
+        times[1].push(t0.elapsed().as_secs_f64());
+    }
+    let [v, o] = times.map(|mut t| {
+        t.sort_by(|a, b| a.total_cmp(b));
+        t[t.len() / 2]
+    });
+    Ok((v, o))
 }
 
 /// What `mdr-impact bench` runs: the work-precision points and (without `quick`) the row
@@ -151,7 +216,7 @@ pub struct BenchReport {
     /// One 10-drop fit.
     pub fit: FitTiming,
     /// `cor --input` rows and their wall time (s), when asked for.
-    pub batch: Option<(usize, f64)>,
+    pub batch: Option<BatchTiming>,
     /// Wall time (s) of `curve --v0 0.01:10:200 --log` on the default scene.
     pub curve_seconds: f64,
     /// `fast` on the indenter shapes against the paraboloid ([`shape_timing`]).
@@ -215,7 +280,12 @@ pub fn run_full(opts: &BenchOptions, tick: &dyn Fn()) -> Result<BenchReport> {
         let outcomes = batch::solve_rows("random", &parsed.rows, &SolveOptions::default())?;
         let mut table = Vec::new();
         batch::write_results(&mut table, &parsed.rows, &outcomes)?;
-        Some((opts.batch_rows, t0.elapsed().as_secs_f64()))
+        let seconds = t0.elapsed().as_secs_f64();
+        Some(BatchTiming {
+            rows: opts.batch_rows,
+            seconds,
+            solves: Some(batch_solves(&rows)?),
+        })
     } else {
         None
     };
@@ -296,8 +366,14 @@ impl BenchReport {
             s.push_str(&general_euler_text(r));
         }
         s.push_str(&fit_timing_text(&self.fit));
-        if let Some((rows, secs)) = self.batch {
-            let _ = writeln!(s, "cor --input path: {rows} rows in {secs:.2} s");
+        if let Some(b) = self.batch {
+            let _ = writeln!(
+                s,
+                "cor --input path: {} rows in {:.2} s.{}",
+                b.rows,
+                b.seconds,
+                b.solves_text()
+            );
         }
         let _ = writeln!(
             s,

@@ -168,6 +168,54 @@ fn general_targets_compare_polymers_with_their_group() {
     assert!(text.contains("- the 30-term real polymer"), "{text}");
 }
 
+fn batch_timing(rows: usize, seconds: f64, solves: Option<(f64, f64)>) -> BatchTiming {
+    BatchTiming {
+        rows,
+        seconds,
+        solves,
+    }
+}
+
+/// The batch target says whether the solves alone, and one unverified solve per row, could
+/// meet it.
+#[test]
+fn batch_target_names_the_floor_of_the_verification() {
+    let floor = targets(
+        &[],
+        None,
+        Some(batch_timing(100_000, 1.9, Some((1.8, 1.5)))),
+        &[],
+    );
+    assert!(
+        floor.contains(
+            "**not met** (100000 rows in 1.90 s; the solves alone took 1.80 s, and one \
+             unverified solve per row 1.50 s: above the target even without any verification)"
+        ),
+        "{floor}"
+    );
+    let below = targets(
+        &[],
+        None,
+        Some(batch_timing(100_000, 1.2, Some((1.1, 0.9)))),
+        &[],
+    );
+    assert!(
+        below.contains(
+            "**not met** (100000 rows in 1.20 s; the solves alone took 1.10 s, one unverified \
+             solve per row 0.90 s)"
+        ),
+        "{below}"
+    );
+}
+
+/// [`batch_solves`] on a few rows: both paths solve every row.
+#[test]
+fn batch_solves_time_both_paths() {
+    let rows = crate::apps::batch::random_rows(8, 3).unwrap();
+    let (verified, one) = batch_solves(&rows).unwrap();
+    assert!(verified > 0.0 && one > 0.0, "{verified} {one}");
+}
+
 #[test]
 fn targets_name_the_groups_that_miss_them() {
     let mut slow = timing(0.05, [30, 90], [200, 700]);
@@ -176,7 +224,7 @@ fn targets_name_the_groups_that_miss_them() {
     let text = targets(
         &[(TimedRows::External, rows.to_vec())],
         Some(3250.0),
-        Some((100_000, 0.99)),
+        Some(batch_timing(100_000, 0.99, None)),
         &[],
     );
     // all rows: median of 10 µs and 40 µs is the upper one (40 µs)
@@ -194,7 +242,7 @@ fn targets_name_the_groups_that_miss_them() {
     );
     assert!(text.contains(": met (3250x)"), "{text}");
     assert!(text.contains(": met (100000 rows in 0.99 s)"), "{text}");
-    let late = targets(&[], None, Some((100_000, 1.01)), &[]);
+    let late = targets(&[], None, Some(batch_timing(100_000, 1.01, None)), &[]);
     assert!(
         late.contains("in at most 1 s: **not met** (100000 rows in 1.01 s)"),
         "{late}"
@@ -206,7 +254,7 @@ fn targets_name_the_groups_that_miss_them() {
             (TimedRows::Random, fast.to_vec()),
         ],
         Some(900.0),
-        Some((1000, 0.1)),
+        Some(batch_timing(1000, 0.1, Some((0.08, 0.07)))),
         &[],
     );
     assert!(
@@ -305,7 +353,7 @@ fn report(quick: bool) -> BenchReport {
             solves: 100,
             drops: 10,
         },
-        batch: Some((1000, 0.25)),
+        batch: Some(batch_timing(1000, 0.25, Some((0.2, 0.17)))),
         curve_seconds: 0.0125,
         shapes: vec![],
         machine: "a test machine".into(),
@@ -321,7 +369,12 @@ fn full_report_text_section_and_files() {
     let first = text.lines().next().unwrap();
     assert!(first.starts_with("mdr-euler  rtol=1e-4"), "{first}");
     assert!(
-        text.contains("cor --input path: 1000 rows in 0.25 s\n"),
+        text.contains(
+            "cor --input path: 1000 rows in 0.25 s. The solves alone (`fast` at rtol 1e-6, all \
+             cores, median of 3 alternating passes): 0.20 s verified (`fast` as `cor --input` \
+             calls it), 0.17 s with one unverified solve per row (`fast::impact_unverified`), \
+             the least any verification can cost (0.85 of the verified time).\n"
+        ),
         "{text}"
     );
     assert!(text.contains("curve --v0 0.01:10:200 --log (default scene): 0.013 s\n"));
