@@ -299,7 +299,8 @@ pub struct BenchArgs {
     /// Seconds of repeats per timed point.
     #[arg(long, allow_hyphen_values = true, default_value_t = 0.3)]
     pub budget: f64,
-    /// Also time `cor --input` on this many random rows (0: skip).
+    /// Also time `cor --input` on this many random rows, and its solves alone, verified and
+    /// unverified (0: skip).
     #[arg(long, default_value_t = 0)]
     pub batch_rows: usize,
     /// An earlier build of mdr-impact (scripts/build-baseline.sh prints its path): times its

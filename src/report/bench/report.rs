@@ -107,7 +107,8 @@ pub fn summary(
             s,
             "\n`mdr-impact cor --input` path (the file's bytes parsed by `batch::parse_rows`, solved by \
              `batch::solve_rows`, formatted by `batch::write_results` into memory; default solver and \
-             rtol 1e-6, all cores): {} random rows of the paper's range in {:.2} s.{}",
+             rtol 1e-6, all cores; median of {BATCH_PASSES} passes, each also timing the solves \
+             alone): {} random rows of the paper's range in {:.2} s.{}",
             b.rows,
             b.seconds,
             b.solves_text()
@@ -120,18 +121,18 @@ pub fn summary(
     s
 }
 
-/// Alternating passes of [`batch_solves`] (each: the verified solves, then the unverified).
-pub const BATCH_SOLVE_PASSES: usize = 3;
+/// Passes of [`batch_timing`], each timing the three paths in turn.
+pub const BATCH_PASSES: usize = 3;
 
-/// The `cor --input` path timed by [`run_full`] on random rows of the paper's range.
+/// The `cor --input` path timed by [`batch_timing`] on random rows of the paper's range.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BatchTiming {
     /// Rows.
     pub rows: usize,
-    /// Wall time of the whole path: parse, solve, format (s).
+    /// Median wall time of the whole path: parse, solve, format (s).
     pub seconds: f64,
-    /// The solves alone on the same rows ([`batch_solves`]): verified `fast` and one
-    /// unverified solve per row (s).
+    /// Median wall times of the solves alone on the same rows: verified `fast` as `cor --input`
+    /// calls it, and one unverified solve per row (s).
     pub solves: Option<(f64, f64)>,
 }
 
@@ -140,10 +141,10 @@ impl BatchTiming {
     pub fn solves_text(&self) -> String {
         match self.solves {
             Some((verified, one)) => format!(
-                " The solves alone (`fast` at rtol 1e-6, all cores, median of {BATCH_SOLVE_PASSES} \
-                 alternating passes): {verified:.2} s verified (`fast` as `cor --input` calls \
-                 it), {one:.2} s with one unverified solve per row (`fast::impact_unverified`), \
-                 the least any verification can cost ({:.2} of the verified time).",
+                " The solves alone (`fast` at rtol 1e-6, all cores): {verified:.2} s verified \
+                 (`fast` as `cor --input` calls it), {one:.2} s with one unverified solve per row \
+                 (`fast::impact_unverified`), the least any verification can cost ({:.2} of the \
+                 verified time).",
                 one / verified
             ),
             None => String::new(),
@@ -151,40 +152,58 @@ impl BatchTiming {
     }
 }
 
-/// The solves of `rows` alone, in parallel (rayon, all cores), at rtol 1e-6, CoR only: verified
-/// `fast` as `cor --input` calls it and one unverified solve per row, each timed over the
-/// whole set in [`BATCH_SOLVE_PASSES`] passes that alternate the two; the median wall time of
-/// each (s).
-pub fn batch_solves(rows: &[crate::apps::batch::Row]) -> Result<(f64, f64)> {
+/// The `cor --input` path on `n` random rows of the paper's range (seed 1), all cores, rtol
+/// 1e-6, CoR only, in [`BATCH_PASSES`] passes that each time in turn: the whole path on the
+/// file's bytes (parse, solve with the default options, format into memory), the verified
+/// `fast` solves alone (as `cor --input` calls it) and one unverified solve per row
+/// (`fast::impact_unverified`); the median of each, so that all three see the same load.
+pub fn batch_timing(n: usize) -> Result<BatchTiming> {
+    use crate::apps::batch;
     use rayon::prelude::*;
     use std::time::Instant;
+    let rows = batch::random_rows(n, 1)?;
+    let mut file = batch::HEADER.join(",");
+    for r in &rows {
+        file.push('\n');
+        file.push_str(&r.text.join(","));
+    }
     let rtol = TIMING_RTOLS[0];
-    let relax = |r: &crate::apps::batch::Row| -> Result<crate::model::material::Prony> {
+    let relax = |r: &batch::Row| -> Result<crate::model::material::Prony> {
         Ok(crate::model::impact::Impact::from_groups(r.groups)?.canonical_relaxation())
     };
-    let mut times = [Vec::new(), Vec::new()];
-    for _ in 0..BATCH_SOLVE_PASSES {
+    let mut times = [Vec::new(), Vec::new(), Vec::new()];
+    for _ in 0..BATCH_PASSES {
+        let t0 = Instant::now();
+        let parsed = batch::parse_rows("random", file.as_bytes())?;
+        let outcomes = batch::solve_rows("random", &parsed.rows, &SolveOptions::default())?;
+        let mut table = Vec::new();
+        batch::write_results(&mut table, &parsed.rows, &outcomes)?;
+        times[0].push(t0.elapsed().as_secs_f64());
         let t0 = Instant::now();
         rows.par_iter()
             .map(|r| fast::impact_with(None, &relax(r)?, rtol, false, false))
             .collect::<Result<Vec<_>>>()?;
-        times[0].push(t0.elapsed().as_secs_f64());
+        times[1].push(t0.elapsed().as_secs_f64());
         let t0 = Instant::now();
         rows.par_iter()
             .map(|r| fast::impact_unverified(&relax(r)?, rtol, false))
             .collect::<Result<Vec<_>>>()?;
-        times[1].push(t0.elapsed().as_secs_f64());
+        times[2].push(t0.elapsed().as_secs_f64());
     }
-    let [v, o] = times.map(|mut t| {
+    let [whole, verified, one] = times.map(|mut t| {
         t.sort_by(|a, b| a.total_cmp(b));
         t[t.len() / 2]
     });
-    Ok((v, o))
+    Ok(BatchTiming {
+        rows: n,
+        seconds: whole,
+        solves: Some((verified, one)),
+    })
 }
 
 /// What `mdr-impact bench` runs: the work-precision points and (without `quick`) the row
 /// timings, the general materials and the Euler baseline on them; always one fit, and, when
-/// `batch_rows > 0`, the `cor --input` path on that many random rows.
+/// `batch_rows > 0`, the `cor --input` path on that many random rows ([`batch_timing`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct BenchOptions {
     /// One case, one setting per solver, no row timings (CI smoke test).
@@ -244,7 +263,7 @@ pub fn full_units(opts: &BenchOptions) -> Result<u64> {
 /// Run the whole benchmark ([`BenchOptions`]); `tick` as [`full_units`] counts. A budget that
 /// is not positive and finite is refused ([`Error::OutOfRange`]).
 pub fn run_full(opts: &BenchOptions, tick: &dyn Fn()) -> Result<BenchReport> {
-    use crate::apps::{batch, curve};
+    use crate::apps::curve;
     use std::time::Instant;
     crate::error::check(
         "--budget",
@@ -268,24 +287,7 @@ pub fn run_full(opts: &BenchOptions, tick: &dyn Fn()) -> Result<BenchReport> {
     }
     let fit = fit_timing()?;
     let batch = if opts.batch_rows > 0 {
-        // the whole `cor --input` path on the file's bytes: parse, solve, format
-        let rows = batch::random_rows(opts.batch_rows, 1)?;
-        let mut file = batch::HEADER.join(",");
-        for r in &rows {
-            file.push('\n');
-            file.push_str(&r.text.join(","));
-        }
-        let t0 = Instant::now();
-        let parsed = batch::parse_rows("random", file.as_bytes())?;
-        let outcomes = batch::solve_rows("random", &parsed.rows, &SolveOptions::default())?;
-        let mut table = Vec::new();
-        batch::write_results(&mut table, &parsed.rows, &outcomes)?;
-        let seconds = t0.elapsed().as_secs_f64();
-        Some(BatchTiming {
-            rows: opts.batch_rows,
-            seconds,
-            solves: Some(batch_solves(&rows)?),
-        })
+        Some(batch_timing(opts.batch_rows)?)
     } else {
         None
     };

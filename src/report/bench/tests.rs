@@ -168,7 +168,7 @@ fn general_targets_compare_polymers_with_their_group() {
     assert!(text.contains("- the 30-term real polymer"), "{text}");
 }
 
-fn batch_timing(rows: usize, seconds: f64, solves: Option<(f64, f64)>) -> BatchTiming {
+fn batch_of(rows: usize, seconds: f64, solves: Option<(f64, f64)>) -> BatchTiming {
     BatchTiming {
         rows,
         seconds,
@@ -183,7 +183,7 @@ fn batch_target_names_the_floor_of_the_verification() {
     let floor = targets(
         &[],
         None,
-        Some(batch_timing(100_000, 1.9, Some((1.8, 1.5)))),
+        Some(batch_of(100_000, 1.9, Some((1.8, 1.5)))),
         &[],
     );
     assert!(
@@ -196,7 +196,7 @@ fn batch_target_names_the_floor_of_the_verification() {
     let below = targets(
         &[],
         None,
-        Some(batch_timing(100_000, 1.2, Some((1.1, 0.9)))),
+        Some(batch_of(100_000, 1.2, Some((1.1, 0.9)))),
         &[],
     );
     assert!(
@@ -208,12 +208,13 @@ fn batch_target_names_the_floor_of_the_verification() {
     );
 }
 
-/// [`batch_solves`] on a few rows: both paths solve every row.
+/// [`batch_timing`] on a few rows: the three paths run on every row.
 #[test]
-fn batch_solves_time_both_paths() {
-    let rows = crate::apps::batch::random_rows(8, 3).unwrap();
-    let (verified, one) = batch_solves(&rows).unwrap();
-    assert!(verified > 0.0 && one > 0.0, "{verified} {one}");
+fn batch_timing_times_the_three_paths() {
+    let b = batch_timing(8).unwrap();
+    assert_eq!(b.rows, 8);
+    let (verified, one) = b.solves.unwrap();
+    assert!(b.seconds > 0.0 && verified > 0.0 && one > 0.0, "{b:?}");
 }
 
 #[test]
@@ -224,7 +225,7 @@ fn targets_name_the_groups_that_miss_them() {
     let text = targets(
         &[(TimedRows::External, rows.to_vec())],
         Some(3250.0),
-        Some(batch_timing(100_000, 0.99, None)),
+        Some(batch_of(100_000, 0.99, None)),
         &[],
     );
     // all rows: median of 10 µs and 40 µs is the upper one (40 µs)
@@ -242,7 +243,7 @@ fn targets_name_the_groups_that_miss_them() {
     );
     assert!(text.contains(": met (3250x)"), "{text}");
     assert!(text.contains(": met (100000 rows in 0.99 s)"), "{text}");
-    let late = targets(&[], None, Some(batch_timing(100_000, 1.01, None)), &[]);
+    let late = targets(&[], None, Some(batch_of(100_000, 1.01, None)), &[]);
     assert!(
         late.contains("in at most 1 s: **not met** (100000 rows in 1.01 s)"),
         "{late}"
@@ -254,7 +255,7 @@ fn targets_name_the_groups_that_miss_them() {
             (TimedRows::Random, fast.to_vec()),
         ],
         Some(900.0),
-        Some(batch_timing(1000, 0.1, Some((0.08, 0.07)))),
+        Some(batch_of(1000, 0.1, Some((0.08, 0.07)))),
         &[],
     );
     assert!(
@@ -353,7 +354,7 @@ fn report(quick: bool) -> BenchReport {
             solves: 100,
             drops: 10,
         },
-        batch: Some(batch_timing(1000, 0.25, Some((0.2, 0.17)))),
+        batch: Some(batch_of(1000, 0.25, Some((0.2, 0.17)))),
         curve_seconds: 0.0125,
         shapes: vec![],
         machine: "a test machine".into(),
@@ -371,9 +372,9 @@ fn full_report_text_section_and_files() {
     assert!(
         text.contains(
             "cor --input path: 1000 rows in 0.25 s. The solves alone (`fast` at rtol 1e-6, all \
-             cores, median of 3 alternating passes): 0.20 s verified (`fast` as `cor --input` \
-             calls it), 0.17 s with one unverified solve per row (`fast::impact_unverified`), \
-             the least any verification can cost (0.85 of the verified time).\n"
+             cores): 0.20 s verified (`fast` as `cor --input` calls it), 0.17 s with one \
+             unverified solve per row (`fast::impact_unverified`), the least any verification \
+             can cost (0.85 of the verified time).\n"
         ),
         "{text}"
     );
