@@ -142,8 +142,8 @@ impl BatchTiming {
         match self.solves {
             Some((verified, one)) => format!(
                 " The solves alone (`fast` at rtol 1e-6, all cores): {verified:.2} s verified \
-                 (`fast` as `cor --input` calls it), {one:.2} s with one unverified solve per row \
-                 (`fast::impact_unverified`), the least any verification can cost ({:.2} of the \
+                 (`fast` as `cor --input` calls it), {one:.2} s as one unverified solve per row \
+                 at the same rtol (`fast::impact_unverified`, no check at all: {:.2} of the \
                  verified time).",
                 one / verified
             ),

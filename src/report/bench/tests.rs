@@ -372,9 +372,9 @@ fn full_report_text_section_and_files() {
     assert!(
         text.contains(
             "cor --input path: 1000 rows in 0.25 s. The solves alone (`fast` at rtol 1e-6, all \
-             cores): 0.20 s verified (`fast` as `cor --input` calls it), 0.17 s with one \
-             unverified solve per row (`fast::impact_unverified`), the least any verification \
-             can cost (0.85 of the verified time).\n"
+             cores): 0.20 s verified (`fast` as `cor --input` calls it), 0.17 s as one \
+             unverified solve per row at the same rtol (`fast::impact_unverified`, no check at \
+             all: 0.85 of the verified time).\n"
         ),
         "{text}"
     );
