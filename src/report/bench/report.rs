@@ -21,7 +21,8 @@ pub fn summary(
          of a CoR-only solve (no histories), errors are against the reference solver at rtol 1e-11 \
          (outside the timed region). Data: [`validation/bench.csv`](validation/bench.csv); \
          plot: `validation/work-precision.svg`. Machine-dependent, so not part of the staleness check. \
-         Re-run: `cargo run --release -- bench --batch-rows 100000` (under two minutes on this machine).\n"
+         Re-run: `cargo run --release -- bench --batch-rows 100000` (the run's own wall time is \
+         at the end of this section).\n"
     );
     let _ = writeln!(s, "![work-precision](validation/work-precision.svg)\n");
     let _ = writeln!(
@@ -246,6 +247,8 @@ pub struct BenchReport {
     pub baseline: Option<BaselineRatio>,
     /// `fast` against the SciPy script ([`scipy_comparison`]).
     pub scipy: ScipyComparison,
+    /// Wall time of the whole run (s).
+    pub seconds: f64,
 }
 
 /// Units of progress [`run_full`] reports: the work-precision points and, without `quick`,
@@ -271,6 +274,7 @@ pub fn run_full(opts: &BenchOptions, tick: &dyn Fn()) -> Result<BenchReport> {
         opts.budget > 0.0,
         "0 < budget < inf",
     )?;
+    let start = Instant::now();
     let points = run(opts.quick, opts.budget, tick)?;
     let mut timed = Vec::new();
     let mut general = Vec::new();
@@ -318,6 +322,7 @@ pub fn run_full(opts: &BenchOptions, tick: &dyn Fn()) -> Result<BenchReport> {
         shapes,
         scipy,
         machine: machine(),
+        seconds: start.elapsed().as_secs_f64(),
     })
 }
 
@@ -438,6 +443,11 @@ impl BenchReport {
         }
         s.push('\n');
         s.push_str(&self.scipy.text());
+        let _ = writeln!(
+            s,
+            "\nThis run of `mdr-impact bench` took {:.1} min.",
+            self.seconds / 60.0
+        );
         s
     }
 }

@@ -360,6 +360,7 @@ fn report(quick: bool) -> BenchReport {
         machine: "a test machine".into(),
         baseline: None,
         scipy: ScipyComparison::NotMeasured("no python here".into()),
+        seconds: 150.0,
     }
 }
 
@@ -392,11 +393,12 @@ fn full_report_text_section_and_files() {
         "\n`mdr-impact curve --v0 0.01:10:200 --log` on the default scene (200 velocities, all \
          cores): 0.013 s.\n"
     ));
-    // the SciPy comparison closes the section, after the shapes' table (empty rows here)
+    // the SciPy comparison follows the shapes' table (empty rows here); the run's own wall
+    // time closes the section
     assert!(
         section.ends_with(
             "| --- | --- | --- |\n\n`fast` against the SciPy script (`python/scipy_cor.py`): \
-             not measured (no python here).\n"
+             not measured (no python here).\n\nThis run of `mdr-impact bench` took 2.5 min.\n"
         ),
         "{section}"
     );
