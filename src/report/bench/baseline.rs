@@ -10,6 +10,8 @@ use std::time::Instant;
 use crate::error::{Error, Result};
 use crate::rng::SplitMix64;
 
+use super::median;
+
 /// Rows of the comparison: `nu` uniform in [-0.5, 0.5], `p2` log-uniform in [1e-3, 1e2], `p3`
 /// in [1e-2, 1e3].
 pub const BASELINE_ROWS: usize = 20_000;
@@ -95,11 +97,6 @@ fn timed_run(bin: &Path, input: &Path) -> Result<(f64, Vec<f64>)> {
     Ok((secs, cors))
 }
 
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
-
 /// Time `baseline` against `today` (this program) on [`BASELINE_ROWS`] rows.
 pub fn baseline_ratio(baseline: &Path, today: &Path) -> Result<BaselineRatio> {
     let dir = tempfile::tempdir().map_err(|e| Error::io(Path::new("tempdir"), e))?;
@@ -134,8 +131,8 @@ pub fn baseline_ratio(baseline: &Path, today: &Path) -> Result<BaselineRatio> {
     Ok(BaselineRatio {
         baseline: baseline.to_path_buf(),
         rows: BASELINE_ROWS,
-        baseline_seconds: median(tb),
-        today_seconds: median(tt),
+        baseline_seconds: median(&mut tb),
+        today_seconds: median(&mut tt),
         max_cor_difference,
     })
 }

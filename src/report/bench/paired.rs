@@ -61,11 +61,7 @@ pub fn alternate(case: &Prony, rows: &[Prony]) -> Result<Option<Paired>> {
             }
         }
     }
-    let median = |v: &mut Vec<f64>| {
-        v.sort_by(|a, b| a.total_cmp(b));
-        v[v.len() / 2]
-    };
-    let mut per_row: Vec<f64> = row_times.iter_mut().map(median).collect();
+    let mut per_row: Vec<f64> = row_times.iter_mut().map(|t| median(t)).collect();
     let n = rows.len() as f64;
     Ok(Some(Paired {
         rows: rows.len(),

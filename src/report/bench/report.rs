@@ -134,22 +134,20 @@ pub struct BatchTiming {
     pub seconds: f64,
     /// Median wall times of the solves alone on the same rows: verified `fast` as `cor --input`
     /// calls it, and one unverified solve per row (s).
-    pub solves: Option<(f64, f64)>,
+    pub solves: (f64, f64),
 }
 
 impl BatchTiming {
-    /// The sentence on [`BatchTiming::solves`] (empty without them).
+    /// The sentence on [`BatchTiming::solves`].
     pub fn solves_text(&self) -> String {
-        match self.solves {
-            Some((verified, one)) => format!(
-                " The solves alone (`fast` at rtol 1e-6, all cores): {verified:.2} s verified \
-                 (`fast` as `cor --input` calls it), {one:.2} s as one unverified solve per row \
-                 at the same rtol (`fast::impact_unverified`, no check at all: {:.2} of the \
-                 verified time).",
-                one / verified
-            ),
-            None => String::new(),
-        }
+        let (verified, one) = self.solves;
+        format!(
+            " The solves alone (`fast` at rtol 1e-6, all cores): {verified:.2} s verified \
+             (`fast` as `cor --input` calls it), {one:.2} s as one unverified solve per row at \
+             the same rtol (`fast::impact_unverified`, no check at all: {:.2} of the verified \
+             time).",
+            one / verified
+        )
     }
 }
 
@@ -191,14 +189,11 @@ pub fn batch_timing(n: usize) -> Result<BatchTiming> {
             .collect::<Result<Vec<_>>>()?;
         times[2].push(t0.elapsed().as_secs_f64());
     }
-    let [whole, verified, one] = times.map(|mut t| {
-        t.sort_by(|a, b| a.total_cmp(b));
-        t[t.len() / 2]
-    });
+    let [whole, verified, one] = times.map(|mut t| median(&mut t));
     Ok(BatchTiming {
         rows: n,
         seconds: whole,
-        solves: Some((verified, one)),
+        solves: (verified, one),
     })
 }
 

@@ -66,15 +66,16 @@ pub fn targets(
                 "**not met**"
             };
             // what the solves alone need, verified and as one unverified solve per row
-            let floor = match b.solves {
-                Some((verified, one)) if one > limit => format!(
+            let (verified, one) = b.solves;
+            let floor = if one > limit {
+                format!(
                     "; the solves alone took {verified:.2} s, and one unverified solve per row \
                      {one:.2} s: above the target even without any verification"
-                ),
-                Some((verified, one)) => format!(
+                )
+            } else {
+                format!(
                     "; the solves alone took {verified:.2} s, one unverified solve per row {one:.2} s"
-                ),
-                None => String::new(),
+                )
             };
             parts.push(format!(
                 "{want} rows through `cor --input` in at most {limit} s: {verdict} ({} rows in {:.2} s{floor})",

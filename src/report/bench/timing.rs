@@ -11,6 +11,13 @@ use crate::solvers::{solve, SolveOptions, SolverKind};
 
 use super::*;
 
+/// The median of `v` (the upper one of an even count), sorting `v` in place; `v` must not be
+/// empty. Every median of the bench.
+pub(super) fn median(v: &mut [f64]) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
 /// Median wall time of `f` over repeats: at least 3 (1 when a single run exceeds `budget`),
 /// at most 101, stopping once `budget` seconds have been spent.
 pub fn median_time(budget: f64, mut f: impl FnMut() -> Result<()>) -> Result<(f64, usize)> {
@@ -25,8 +32,7 @@ pub fn median_time(budget: f64, mut f: impl FnMut() -> Result<()>) -> Result<(f6
             break;
         }
     }
-    times.sort_by(|a, b| a.total_cmp(b));
-    Ok((times[times.len() / 2], times.len()))
+    Ok((median(&mut times), times.len()))
 }
 
 /// Which rows a timing table describes ([`external_timing`] or [`random_timing`]).
@@ -264,10 +270,7 @@ fn time_rows(rows: &[crate::report::validate::ExternalRow], tick: &dyn Fn()) -> 
         }
     }
     for (t, o) in times.iter_mut().zip(&mut out) {
-        for k in 0..2 {
-            t[k].sort_by(|a, b| a.total_cmp(b));
-            o.seconds[k] = t[k][t[k].len() / 2];
-        }
+        o.seconds = [median(&mut t[0]), median(&mut t[1])];
     }
     Ok(out)
 }
@@ -372,11 +375,8 @@ pub(super) fn group_stats(rows: &[RowTiming]) -> Vec<GroupStats> {
             continue;
         }
         let n = sel.len() as f64;
-        let median = |k: usize| {
-            let mut v: Vec<f64> = sel.iter().map(|t| t.seconds[k]).collect();
-            v.sort_by(|a, b| a.total_cmp(b));
-            v[v.len() / 2]
-        };
+        let median_of =
+            |k: usize| median(&mut sel.iter().map(|t| t.seconds[k]).collect::<Vec<_>>());
         // NaN (no reference) when no row has one
         let max_err = |k: usize| sel.iter().map(|t| t.cor_error[k]).fold(f64::NAN, f64::max);
         let steps = |k: usize| sel.iter().map(|t| t.steps[k] as f64).sum::<f64>() / n;
@@ -385,7 +385,7 @@ pub(super) fn group_stats(rows: &[RowTiming]) -> Vec<GroupStats> {
         out.push(GroupStats {
             name,
             n: sel.len(),
-            median: [median(0), median(1)],
+            median: [median_of(0), median_of(1)],
             max_error: [max_err(0), max_err(1)],
             steps: [steps(0), steps(1)],
             evaluations: [evals(0), evals(1)],
@@ -676,13 +676,7 @@ pub fn shape_timing(budget: f64) -> Result<Vec<ShapeTiming>> {
             break;
         }
     }
-    let medians: Vec<f64> = times
-        .iter_mut()
-        .map(|t| {
-            t.sort_by(|a, b| a.total_cmp(b));
-            t[t.len() / 2]
-        })
-        .collect();
+    let medians: Vec<f64> = times.iter_mut().map(|t| median(t)).collect();
     Ok(sets
         .iter()
         .zip(&medians)
