@@ -67,16 +67,15 @@ pub fn targets(
             };
             // what the solves alone need, verified and as one unverified solve per row
             let (verified, one) = b.solves;
-            let floor = if one > limit {
-                format!(
-                    "; the solves alone took {verified:.2} s, and one unverified solve per row \
-                     {one:.2} s: above the target even without any verification"
-                )
+            let (and, above) = if one > limit {
+                ("and ", ": above the target even without any verification")
             } else {
-                format!(
-                    "; the solves alone took {verified:.2} s, one unverified solve per row {one:.2} s"
-                )
+                ("", "")
             };
+            let floor = format!(
+                "; the solves alone took {verified:.2} s, {and}one unverified solve per row \
+                 {one:.2} s{above}"
+            );
             parts.push(format!(
                 "{want} rows through `cor --input` in at most {limit} s: {verdict} ({} rows in {:.2} s{floor})",
                 b.rows, b.seconds
