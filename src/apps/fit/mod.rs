@@ -251,10 +251,10 @@ pub struct FitResult {
     pub warnings: Vec<String>,
 }
 
-/// The weighted problem: model, data, which coordinates move.
 /// Model CoR and contact time (s) of one drop.
 type Forward = (f64, f64);
 
+/// The weighted problem: model, data, which coordinates move.
 struct Ctx<'a> {
     model: &'a Model,
     data: &'a Data,
@@ -326,7 +326,7 @@ impl<'a> Ctx<'a> {
             }
             built.push((impacts.len() - start, error));
         }
-        let solved: Vec<Result<(f64, f64)>> = impacts
+        let solved: Vec<Result<Forward>> = impacts
             .par_iter()
             .map(|imp| solve(imp, &opts).map(|out| (out.cor, out.contact_time)))
             .collect();
@@ -356,7 +356,7 @@ impl<'a> Ctx<'a> {
     }
 
     /// Model CoR and contact time of every drop ([`Ctx::forward_points`] at one point).
-    fn forward(&self, values: &[f64], rtol: f64) -> Result<Vec<(f64, f64)>> {
+    fn forward(&self, values: &[f64], rtol: f64) -> Result<Vec<Forward>> {
         let points = [values.to_vec()];
         let (r, count) = self
             .forward_points(&points, rtol)
@@ -398,7 +398,7 @@ impl<'a> Ctx<'a> {
 
     /// The weighted residuals of the model values `f` at `values`; the point is recorded in
     /// [`Ctx::visited`] when `rtol` is [`FIT_RTOL`] and its misfit is finite.
-    fn weighted(&self, values: &[f64], rtol: f64, f: Vec<(f64, f64)>) -> Vec<f64> {
+    fn weighted(&self, values: &[f64], rtol: f64, f: Vec<Forward>) -> Vec<f64> {
         let r: Vec<f64> = self
             .residual_list_of(f)
             .into_iter()
@@ -416,7 +416,7 @@ impl<'a> Ctx<'a> {
     }
 
     /// The residuals of the model values `f` (CoR and contact time of every drop).
-    fn residual_list_of(&self, f: Vec<(f64, f64)>) -> Vec<Residual> {
+    fn residual_list_of(&self, f: Vec<Forward>) -> Vec<Residual> {
         let mut out = Vec::with_capacity(self.data.residual_count());
         for (i, (o, (e, t))) in self.data.observations.iter().zip(f).enumerate() {
             out.push(Residual {
