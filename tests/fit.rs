@@ -1,5 +1,5 @@
 //! `fit`: round trip on synthetic drop tests, identifiability from CoR alone, degenerate data,
-//! and the CLI's JSON keys. The 200-repetition study is `mdr-impact fit-study` (VALIDATION.md
+//! the CLI's JSON keys, and the parallel forward solves against one thread. The 200-repetition study is `mdr-impact fit-study` (VALIDATION.md
 //! section 11) and the ignored test below.
 
 use std::path::Path;
@@ -506,4 +506,28 @@ fn study_inputs_are_checked() {
             other => panic!("{field}: {other:?}"),
         }
     }
+}
+
+#[test]
+fn the_parallel_forward_solves_give_the_one_by_one_fit() {
+    // `fit` solves the drops of every misfit and Jacobian in parallel; on one thread the same
+    // solves run one by one, so every number and the count of solves must agree to the bit
+    let exact = study::exact_data(&config(1, true)).unwrap();
+    let d = study::noisy(&exact, 0.01, 3, 0);
+    let mut fixed = [None; 4];
+    fixed[3] = Some(study::TRUTH[3]);
+    let all = fit::fit(&standard(), &d, &fixed).unwrap();
+    let one = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .unwrap()
+        .install(|| fit::fit(&standard(), &d, &fixed))
+        .unwrap();
+    assert_eq!(all.solves, one.solves);
+    assert_eq!(all.values, one.values);
+    assert_eq!(all.parameters, one.parameters);
+    assert_eq!(all.groups, one.groups);
+    assert_eq!(all.covariance, one.covariance);
+    assert_eq!(all.verdict, one.verdict);
+    assert!(all.solves > 1000, "{} solves", all.solves);
 }
