@@ -258,9 +258,10 @@ pub fn line_chart_svg(
                 });
         }
         if series.len() > 1 {
+            let corner = legend_corner(series, (x0, x1), (y0 - pad, y1 + pad));
             chart
                 .configure_series_labels()
-                .position(SeriesLabelPosition::UpperRight)
+                .position(corner)
                 .border_style(BLACK)
                 .background_style(WHITE.mix(0.8))
                 .draw()
@@ -271,6 +272,48 @@ pub fn line_chart_svg(
     write_atomic(path, |w| {
         w.write_all(svg.as_bytes()).map_err(|e| Error::io(path, e))
     })
+}
+
+/// The corner of a [`line_chart_svg`] for its legend: the one whose box (about the legend's
+/// size in the 900 x 560 chart: 6 px per character of the longest name and 60 px more across,
+/// 16 px per line and 16 px more down, over a plot area of about 800 x 460 px) covers the
+/// fewest points of the lines (each segment sampled at 17 points), the upper right on a tie.
+fn legend_corner(
+    series: &[(String, Vec<(f64, f64)>)],
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
+) -> SeriesLabelPosition {
+    let longest = series
+        .iter()
+        .map(|(n, _)| n.chars().count())
+        .max()
+        .unwrap_or(0);
+    let w = ((6 * longest + 60) as f64 / 800.0).min(0.9);
+    let h = ((16 * (series.len() + 1)) as f64 / 460.0).min(0.9);
+    // corners as the fractions of the axes where their boxes start
+    let corners = [
+        (SeriesLabelPosition::UpperRight, 1.0 - w, 1.0 - h),
+        (SeriesLabelPosition::UpperLeft, 0.0, 1.0 - h),
+        (SeriesLabelPosition::LowerRight, 1.0 - w, 0.0),
+        (SeriesLabelPosition::LowerLeft, 0.0, 0.0),
+    ];
+    let mut covered = [0usize; 4];
+    for (_, pts) in series {
+        for seg in pts.windows(2) {
+            for k in 0..=16 {
+                let f = k as f64 / 16.0;
+                let x = (seg[0].0 + f * (seg[1].0 - seg[0].0) - x0) / (x1 - x0);
+                let y = (seg[0].1 + f * (seg[1].1 - seg[0].1) - y0) / (y1 - y0);
+                for (n, &(_, cx, cy)) in covered.iter_mut().zip(&corners) {
+                    if x >= cx && x <= cx + w && y >= cy && y <= cy + h {
+                        *n += 1;
+                    }
+                }
+            }
+        }
+    }
+    let best = (0..4).min_by_key(|&i| covered[i]).unwrap_or(0);
+    corners[best].0.clone()
 }
 
 /// Top of the CoR axis: `e` runs from 0 to a little above 1, so that the line `e = 1` stays
@@ -470,4 +513,30 @@ pub fn tick_label(x: f64) -> String {
     // round to four significant digits, then print the shortest form of that number
     let rounded: f64 = format!("{x:.3e}").parse().unwrap_or(x);
     format!("{rounded}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn corner(series: &[(String, Vec<(f64, f64)>)]) -> String {
+        format!("{:?}", legend_corner(series, (0.0, 1.0), (0.0, 1.0)))
+    }
+
+    #[test]
+    fn the_legend_goes_to_the_emptiest_corner() {
+        // a line falling from the upper left to the lower right leaves the upper right free
+        let two = [
+            ("a".to_string(), vec![(0.0, 1.0), (1.0, 0.0)]),
+            ("b".to_string(), vec![(0.0, 0.9), (1.0, 0.1)]),
+        ];
+        assert_eq!(corner(&two), "UpperRight");
+        // a line rising into the upper right (the work-precision plot's slow solver) moves it
+        let rising = [
+            ("a".to_string(), vec![(0.5, 0.6), (1.0, 0.95)]),
+            ("b".to_string(), vec![(0.0, 0.0), (0.2, 0.3)]),
+            ("c".to_string(), vec![(0.0, 0.95), (0.3, 0.9)]),
+        ];
+        assert_eq!(corner(&rising), "LowerRight");
+    }
 }
