@@ -1,6 +1,6 @@
 //! `fit`: round trip on synthetic drop tests, identifiability from CoR alone, degenerate data,
-//! the CLI's JSON keys, and the parallel forward solves against one thread. The 200-repetition study is `mdr-impact fit-study` (VALIDATION.md
-//! section 11) and the ignored test below.
+//! the CLI's JSON keys, and a fit independent of the number of threads. The 200-repetition
+//! study is `mdr-impact fit-study` (VALIDATION.md section 11) and the ignored test below.
 
 use std::path::Path;
 use std::process::Command;
@@ -510,8 +510,9 @@ fn study_inputs_are_checked() {
 
 #[test]
 fn the_parallel_forward_solves_give_the_one_by_one_fit() {
-    // `fit` solves the drops of every misfit and Jacobian in parallel; on one thread the same
-    // solves run one by one, so every number and the count of solves must agree to the bit
+    // `fit` solves the drops of every misfit and Jacobian in parallel and gathers them in drop
+    // order: however the solves are scheduled, every number and the count of solves must be
+    // those of a one-thread pool, to the bit
     let exact = study::exact_data(&config(1, true)).unwrap();
     let d = study::noisy(&exact, 0.01, 3, 0);
     let mut fixed = [None; 4];
