@@ -194,7 +194,11 @@ pub fn chart_text(
     Ok(svg)
 }
 
-/// A line chart of one or more named series as SVG, written atomically.
+/// Radius (px) of the marker that stands for a series of one point in [`line_chart_svg`].
+const SINGLE_POINT_RADIUS: i32 = 5;
+
+/// A line chart of one or more named series as SVG, written atomically. A series of a single
+/// point (a line through it would draw nothing) is drawn as a filled circle.
 pub fn line_chart_svg(
     path: &Path,
     title: &str,
@@ -231,6 +235,13 @@ pub fn line_chart_svg(
             y1 = y0 + 1.0;
         }
         let pad = 0.05 * (y1 - y0);
+        // room for the whole of a marker at the ends of the x range
+        let x_pad = if series.iter().any(|(_, p)| p.len() == 1) {
+            0.03 * (x1 - x0)
+        } else {
+            0.0
+        };
+        let (x0, x1) = (x0 - x_pad, x1 + x_pad);
         let root = SVGBackend::with_string(&mut svg, (900, 560)).into_drawing_area();
         let e = |e: &dyn std::fmt::Display| Error::io(path, e);
         root.fill(&WHITE).map_err(|x| e(&x))?;
@@ -249,13 +260,26 @@ pub fn line_chart_svg(
             .map_err(|x| e(&x))?;
         for (i, (name, pts)) in series.iter().enumerate() {
             let color = Palette99::pick(i).to_rgba();
-            chart
-                .draw_series(LineSeries::new(pts.iter().copied(), color.stroke_width(2)))
-                .map_err(|x| e(&x))?
-                .label(name.as_str())
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
-                });
+            // a line through one point draws nothing: such a series is a marker
+            let single = pts.len() == 1;
+            let ann = if single {
+                chart.draw_series(
+                    pts.iter()
+                        .map(|&p| Circle::new(p, SINGLE_POINT_RADIUS, color.filled())),
+                )
+            } else {
+                chart.draw_series(LineSeries::new(pts.iter().copied(), color.stroke_width(2)))
+            };
+            ann.map_err(|x| e(&x))?.label(name.as_str()).legend(
+                move |(x, y)| -> DynElement<'static, SVGBackend<'_>, (i32, i32)> {
+                    if single {
+                        Circle::new((x + 9, y), SINGLE_POINT_RADIUS, color.filled()).into_dyn()
+                    } else {
+                        PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
+                            .into_dyn()
+                    }
+                },
+            );
         }
         if series.len() > 1 {
             let corner = legend_corner(series, (x0, x1), (y0 - pad, y1 + pad));
@@ -538,5 +562,34 @@ mod tests {
             ("c".to_string(), vec![(0.0, 0.95), (0.3, 0.9)]),
         ];
         assert_eq!(corner(&rising), "LowerRight");
+    }
+
+    #[test]
+    fn a_series_of_one_point_is_a_marker() {
+        let dir = std::env::temp_dir().join(format!("mdr-plot-marker-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("chart.svg");
+        let count = |series: &[(String, Vec<(f64, f64)>)]| {
+            line_chart_svg(&path, "t", "x", "y", series).unwrap();
+            let svg = std::fs::read_to_string(&path).unwrap();
+            (
+                svg.matches("<circle").count(),
+                svg.matches("<polyline").count(),
+            )
+        };
+        // one point each (a `bench --quick` run): a marker in the plot and one in the legend
+        let single = [
+            ("a".to_string(), vec![(0.0, 1.0)]),
+            ("b".to_string(), vec![(1.0, 0.0)]),
+        ];
+        let (circles, axes) = count(&single);
+        assert_eq!(circles, 4);
+        // lines stay lines: four polylines (two lines, two legend keys) beside the frame's
+        let lines = [
+            ("a".to_string(), vec![(0.0, 1.0), (1.0, 0.5)]),
+            ("b".to_string(), vec![(0.0, 0.0), (1.0, 0.2)]),
+        ];
+        assert_eq!(count(&lines), (0, axes + 4));
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 }
