@@ -1,7 +1,7 @@
 //! The catalogue's cases carry their expected values and tolerances
 //! (`mdr_impact::report::expected`), and every solver meets them by name.
 
-mod common;
+use crate::common;
 
 use common::{abs_rel_err, opts};
 use mdr_impact::report::catalogue::IMPACTS;
@@ -42,7 +42,7 @@ fn every_case_has_expected_values_that_the_solvers_meet() {
 /// prints the table for `src/report/expected.rs` with `--ignored --nocapture`.
 #[test]
 #[ignore = "regenerates the table of src/report/expected.rs; about a second in release: \
-            cargo test --release --test catalogue -- --ignored --nocapture"]
+            cargo test --release --test suite catalogue:: -- --ignored --nocapture"]
 fn regenerate_expected_values() {
     for case in IMPACTS {
         let o = solve(&case.impact().unwrap(), &opts(SolverKind::Reference, 1e-10)).unwrap();

@@ -3,7 +3,7 @@
 //! printed as an rtol, a solver failure not blamed on `--v0`, `sweep`'s lines, `stress` outside
 //! the repository, the effective sphere of two bodies.
 
-mod common;
+use crate::common;
 
 use common::{run, stderr};
 use mdr_impact::apps::curve::DEFAULT_VELOCITIES;

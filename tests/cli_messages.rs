@@ -1,7 +1,7 @@
 //! Messages a user meets, one test per fix: each names the key, the file and the table (or
 //! the flag and the parameter) it is about, in words rather than Rust type names.
 
-mod common;
+use crate::common;
 
 use common::{run, stderr};
 

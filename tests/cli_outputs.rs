@@ -2,7 +2,7 @@
 //! with the usual permissions, all or none, never replacing what is not a regular file; and
 //! which solver answered and why.
 
-mod common;
+use crate::common;
 
 use std::path::Path;
 

@@ -1,7 +1,7 @@
 //! Warnings where a scene is almost certainly a unit mistake: the answer is still given, the
 //! warning says what looks wrong and what to check.
 
-mod common;
+use crate::common;
 
 use common::{run, stderr};
 use mdr_impact::io::scene::Scene;

@@ -1,7 +1,7 @@
 //! Plots a referee accepts: log axes labelled at every decade and at both ends of the range,
 //! titles that name the scene, and the force-indentation loop beside the force-time plot.
 
-mod common;
+use crate::common;
 
 use common::{run, stderr};
 use mdr_impact::io::plot::{log_ticks, tick_label};

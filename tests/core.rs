@@ -7,7 +7,7 @@ use mdr_impact::solvers::mdr;
 use mdr_impact::*;
 use nalgebra::{Matrix2, Vector2};
 
-mod common;
+use crate::common;
 use common::{case_groups, case_impact, opts};
 
 /// The network of Eq. (8) under a unit step of u relaxes exactly like the closed-form G_eq(t).

@@ -2,7 +2,7 @@
 //! the default scene's curve, strict input) and the command line (files, errors, no partial
 //! output).
 
-mod common;
+use crate::common;
 
 use common::{run, stderr};
 

@@ -2,7 +2,7 @@
 //! expansions, the fits against data made by the laws themselves, and the command line (files,
 //! formats, errors, no partial output).
 
-mod common;
+use crate::common;
 
 use std::path::Path;
 

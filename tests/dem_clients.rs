@@ -3,7 +3,7 @@
 //! and the command line. The runs in the real codes are `validation/dem_clients/verify.py`
 //! (`.ci/run`).
 
-mod common;
+use crate::common;
 
 use common::{run, stderr};
 

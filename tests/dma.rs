@@ -3,10 +3,10 @@
 //! Synthetic data from a known smooth 20-term spectrum with a known WLF shift and 1 %
 //! multiplicative noise ([`synthetic`]): the recovered shift factors, the fit and the CoR of the
 //! fitted material against the true one at several temperatures; the committed example
-//! `scenes/dma_example.csv` (regenerate: `cargo test --release --test dma -- --ignored
-//! regenerate_example`); the command on it and on bad data.
+//! `scenes/dma_example.csv` (regenerate: `cargo test --release --test suite
+//! dma::regenerate_example -- --ignored`); the command on it and on bad data.
 
-mod common;
+use crate::common;
 
 /// The round trip's pieces of `report::validate::dma` (the section 1f of VALIDATION.md), unwrapped.
 fn true_law() -> ShiftLaw {

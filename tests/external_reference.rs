@@ -1,7 +1,7 @@
 //! Agreement with the external reference tables (`reference/external/cor_python.csv` and
 //! `cor_python_corner.csv`, computed with SciPy outside the project, estimated accuracy 1.1e-12
 //! or better): every tenth row by default, all 765 rows with
-//! `cargo test --release --test external_reference -- --ignored`.
+//! `cargo test --release --test suite external_reference:: -- --ignored`.
 
 use mdr_impact::report::validate::{external_rows, ExternalRow};
 use mdr_impact::{solve, Groups, Impact, SolveOptions, SolverKind};

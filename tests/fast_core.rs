@@ -1,10 +1,10 @@
 //! The `fast` solver: elastic limits, outcome consistency, convergence in `rtol`, errors, and a
 //! wide random sweep without NaN. The throwaway timing over the paper's range is `#[ignore]`d:
-//! `cargo test --release --test fast_core -- --ignored --nocapture`.
+//! `cargo test --release --test suite fast_core:: -- --ignored --nocapture`.
 
 use mdr_impact::{solvers::fast, Error, Prony, PronyTerm};
 
-mod common;
+use crate::common;
 use common::canonical;
 
 const K16: f64 = 16.0 / 3.0;
@@ -369,7 +369,7 @@ fn wide_random_sweep_without_nan() {
 /// The stress run quoted in the `fast` module docs: 330 000 solves, three seeds, every rtol
 /// from 1e-2 to 1e-12 (about 20 s in a release build).
 #[test]
-#[ignore = "stress, release build: cargo test --release --test fast_core -- --ignored wide_random_stress"]
+#[ignore = "stress, release build: cargo test --release --test suite fast_core::wide_random_stress -- --ignored"]
 fn wide_random_stress() {
     let rtols = [
         1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12,
@@ -382,7 +382,7 @@ fn wide_random_stress() {
 /// Throwaway timing over the paper's range (nu in (-1, 0.5], p2 in [1e-4, 1e2], p3 in
 /// [1e-3, 1e4]): median and max microseconds per impact at rtol 1e-6 and 1e-10.
 #[test]
-#[ignore = "timing, release build: cargo test --release --test fast_core -- --ignored --nocapture"]
+#[ignore = "timing, release build: cargo test --release --test suite fast_core:: -- --ignored --nocapture"]
 fn timing_over_the_paper_range() {
     let mut cases = vec![];
     for nu in [-0.9, -0.5, 0.0, 0.3, 0.45, 0.49, 0.499, 0.5] {

@@ -8,7 +8,7 @@ use mdr_impact::solvers::theory::reference;
 use mdr_impact::{solvers::fast, Error, Prony, PronyTerm};
 use proptest::prelude::*;
 
-mod common;
+use crate::common;
 use common::abs_rel_err;
 
 /// `G_eq` of a material with `n_shear` shear terms log-spaced over 20 decades

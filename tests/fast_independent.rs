@@ -5,7 +5,7 @@
 
 use mdr_impact::{solvers::fast, Prony, PronyTerm};
 
-mod common;
+use crate::common;
 use common::canonical;
 
 const K16: f64 = 16.0 / 3.0;

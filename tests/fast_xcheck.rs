@@ -5,7 +5,7 @@
 //! file),
 //! `XROWS` (a CSV `nu,p2,p3,cor,...` to check instead of the external table),
 //! `XCOR_BELOW` (only the rows whose reference CoR is below this value).
-//! `cargo test --release --test fast_xcheck -- --ignored --nocapture`
+//! `cargo test --release --test suite fast_xcheck:: -- --ignored --nocapture`
 use mdr_impact::report::validate::external_rows;
 use mdr_impact::{solvers::fast, Groups, Impact};
 use std::time::Instant;

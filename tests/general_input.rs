@@ -5,7 +5,7 @@ use mdr_impact::io::scene::Scene;
 use mdr_impact::model::material::{BulkInput, ShearProny};
 use mdr_impact::{solve, Error, Impact, Material, SolverKind, Sphere};
 
-mod common;
+use crate::common;
 use common::{abs_rel_err, opts};
 
 const HEAD: &str = "[sphere]\nmass = 4.11e-3\nradius = 5.0e-3\n[impact]\nvelocity = 0.99\n";

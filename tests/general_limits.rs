@@ -8,7 +8,7 @@ use mdr_impact::model::material::{BulkInput, Material, ShearProny};
 use mdr_impact::report::validate::fmt_err;
 use mdr_impact::{solve, Impact, Outcome, SolveOptions, SolverKind, Sphere};
 
-mod common;
+use crate::common;
 use common::rel_err;
 
 const RTOL: f64 = 1e-10;

@@ -2,7 +2,7 @@
 //! scaled by the glassy modulus; checked against the other solvers (no shared code beyond the
 //! material) and against the limit `g_inf -> 0+` of solids, whose scale is `g_inf`.
 
-mod common;
+use crate::common;
 
 use common::{abs_rel_err, opts, run, stderr};
 use mdr_impact::io::scene::Scene;

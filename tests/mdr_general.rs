@@ -8,7 +8,7 @@ use mdr_impact::model::material::{BulkInput, BulkProny, BulkRheology, ShearProny
 use mdr_impact::{solve, Error, Impact, Material, Resolution, SolverKind, Sphere};
 use std::time::Instant;
 
-mod common;
+use crate::common;
 use common::opts;
 
 fn sphere() -> Sphere {

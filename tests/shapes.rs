@@ -5,7 +5,7 @@
 //! every shape on a standard solid, a three-term material and a real polymer spectrum, and the
 //! limit exact sphere -> paraboloid as `a/R -> 0`.
 
-mod common;
+use crate::common;
 
 use common::{abs_rel_err, opts};
 use mdr_impact::model::geometry::{power_law_stretch, Shape};

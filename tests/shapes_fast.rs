@@ -6,7 +6,7 @@
 //! 0.73 R. The outside checks' tolerances: `fast` at rtol 1e-8 within 1e-6 of `reference` at
 //! 1e-10 in `cor`, `contact_time`, `max_indentation` and `max_force`.
 
-mod common;
+use crate::common;
 
 use common::opts;
 use mdr_impact::model::geometry::Shape;

@@ -3,7 +3,7 @@
 //! Every answer within rtol or refused; never a panic, never NaN.
 //!
 //! Slow (about two minutes on 2 cores in release):
-//! `cargo test --release --test stress -- --ignored`.
+//! `cargo test --release --test suite stress:: -- --ignored`.
 
 use mdr_impact::report::stress;
 
@@ -13,7 +13,7 @@ const MAX_REFUSED_SHARE: f64 = 1e-3;
 
 #[test]
 #[ignore = "slow: 2000 rows x 20 solves plus the reference truth, about two minutes in release; \
-            cargo test --release --test stress -- --ignored"]
+            cargo test --release --test suite stress:: -- --ignored"]
 fn every_answer_within_rtol_or_refused() {
     let r = stress::run(2000, stress::DEFAULT_SEED, &|| {});
     let t = r.total();

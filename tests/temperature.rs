@@ -2,7 +2,7 @@
 //! multiply every relaxation time by `a_T` (thermorheological simplicity); the shift in a scene
 //! equals the hand-shifted Prony series to the last bit.
 
-mod common;
+use crate::common;
 
 use common::run;
 use mdr_impact::io::scene::Scene;

@@ -1,5 +1,5 @@
 //! Work-precision sweep of the reference impact solver over the paper's parameter box
-//! (slow: run with `cargo test --release --test theory_grid -- --ignored --nocapture`).
+//! (slow: run with `cargo test --release --test suite theory_grid:: -- --ignored --nocapture`).
 //! Prints the median / max time per impact. The cross-check against the independent tables is
 //! `tests/external_reference.rs` (committed tables, every row asserted).
 

@@ -7,7 +7,7 @@ use mdr_impact::solvers::theory::reference::impact;
 use mdr_impact::solvers::theory::viscoelastic::{response, OneMaximum};
 use mdr_impact::{Error, History};
 
-mod common;
+use crate::common;
 use common::canonical;
 
 /// Elastic series: e = 1 to 1e-12, contact time, maximum indentation and force equal Hertz with

@@ -1,6 +1,6 @@
 //! The committed reference files (`reference/`) equal what the code produces now.
 //!
-//! Regenerate with `cargo test --test theory_reference_files -- --ignored` (or, once wired,
+//! Regenerate with `cargo test --test suite theory_reference_files:: -- --ignored` (or, once wired,
 //! `mdr-impact reference --out reference`).
 
 use mdr_impact::solvers::theory::generate_reference;

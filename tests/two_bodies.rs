@@ -18,7 +18,7 @@ use mdr_impact::{
     solve, Body, BodyMaterial, Error, Impact, Outcome, Side, SolverKind, Sphere, TwoBodies,
 };
 
-mod common;
+use crate::common;
 use common::{opts, rel_err};
 
 fn run(imp: &Impact, solver: SolverKind, rtol: f64) -> Outcome {

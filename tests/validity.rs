@@ -2,7 +2,7 @@
 //! `run` prints them, `curve` adds the ratio columns and warns, and a density enables the
 //! quasi-static check (docs/theory.md §12, `model::validity`).
 
-mod common;
+use crate::common;
 
 use common::run;
 

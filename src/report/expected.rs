@@ -3,7 +3,7 @@
 //! (`m = R = v0 = G_inf = 1`), committed so that a change of any solver, the reference included,
 //! is caught against a fixed number.
 //!
-//! Regenerate (prints this table): `cargo test --release --test catalogue -- --ignored --nocapture`.
+//! Regenerate (prints this table): `cargo test --release --test suite catalogue:: -- --ignored --nocapture`.
 
 use super::catalogue::Case;
 

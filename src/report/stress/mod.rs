@@ -15,7 +15,7 @@
 //! so where the truth is looser than the rtol tested the check is only as strict as the truth. Rows are drawn from the seed and their index alone and reduced in index order,
 //! so the report does not depend on the number of threads. Re-run:
 //! `mdr-impact stress --rows N --seed S`, or
-//! `cargo test --release --test stress -- --ignored`.
+//! `cargo test --release --test suite stress:: -- --ignored`.
 
 use std::collections::BTreeMap;
 use std::panic::{catch_unwind, AssertUnwindSafe};

@@ -612,7 +612,7 @@ paper's range and beyond; and 100 random points), then the 105 rows of \
 `fast` missed rtol 1e-6; CoR down to 5.5e-4). Reference: an independent SciPy solution of the Lee–Radok/Ting \
 impact (implicit Radau and explicit DOP853 cross-checked, estimated accuracy 1.1e-12 or better; provenance and \
 regeneration in `reference/external/README.md`). Relative errors, max / mean over all rows. Re-run: \
-`mdr-impact validate`, or `cargo test --release --test external_reference -- --ignored`.\n\n";
+`mdr-impact validate`, or `cargo test --release --test suite external_reference:: -- --ignored`.\n\n";
 
 const PRESCRIBED_TEXT: &str = "Inputs: the material of every catalogue case, a sphere of radius 1 pressed along a \
 triangle (`d = 0.3 t` up to `t = 1`, then back) and a half-sine (`d = 0.3 sin(pi t / 2)`), 201 sample times \
