@@ -515,3 +515,33 @@ fn alternate_times_case_and_rows() {
     assert!(got.work.0 >= 1.0 && got.work.1 >= got.work.0, "{got:?}");
     assert_eq!(alternate(&case, &[]).unwrap(), None);
 }
+
+#[test]
+fn shape_table_names_the_shapes_over_the_target() {
+    let row = |shape: &'static str, ratio: f64| ShapeTiming {
+        shape,
+        seconds: 2e-5 * ratio,
+        ratio,
+    };
+    let all = [
+        row("paraboloid", 1.0),
+        row("cone", 1.18),
+        row("flat punch", 0.27),
+    ];
+    let t = shape_timing_table(&all);
+    assert!(
+        t.contains("At most 1.5x the paraboloid: met by all 2 shapes."),
+        "{t}"
+    );
+    // 1.504 prints as 1.50: met, as the table shows it
+    let some = [
+        row("paraboloid", 1.0),
+        row("power law n = 3", 1.504),
+        row("exact sphere", 1.74),
+    ];
+    let t = shape_timing_table(&some);
+    assert!(
+        t.contains("met by 1 of 2 shapes, **not met** by exact sphere (1.74)."),
+        "{t}"
+    );
+}
