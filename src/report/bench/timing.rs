@@ -720,6 +720,9 @@ pub fn shape_timing_table(rows: &[ShapeTiming]) -> String {
         .map(|r| format!("{} ({:.2})", r.shape, r.ratio))
         .collect();
     let shapes = rows.len().saturating_sub(1);
+    if shapes == 0 {
+        return s;
+    }
     let _ = writeln!(
         s,
         "\nAt most {SHAPE_TARGET_RATIO}x the paraboloid: {}.",
