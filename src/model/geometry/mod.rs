@@ -422,40 +422,54 @@ pub enum Geometry {
     },
 }
 
-/// `(1 + u^2) atanh(u) - u` for `0 <= u < 1`, by its series `Σ_{j>=1} 4j/(4j^2-1) u^(2j+1)`
-/// where the closed form cancels (`u < 0.2`: the closed form loses at most `0.75 / u^2` units in
-/// the last place, 19 at `u = 0.2`; the series needs at most 12 terms there).
+/// Below this `u` the cap's functions of `u = a / R` use the series of [`cap_atanh_tail`]
+/// instead of `atanh` (where `ψ`'s closed form cancels).
+pub const CAP_SERIES_U: f64 = 0.2;
+
+/// `(1 + u^2) atanh(u) - u` for `0 <= u < 1`, by the series of [`cap_atanh_tail`] where the
+/// closed form cancels (`u <` [`CAP_SERIES_U`]: the closed form loses at most `0.75 / u^2` units
+/// in the last place, 19 at `u = 0.2`).
 fn cap_psi(u: f64) -> f64 {
-    cap_psi_at(u, if u >= 0.2 { u.atanh() } else { 0.0 })
+    cap_psi_at(u, if u >= CAP_SERIES_U { u.atanh() } else { 0.0 })
 }
 
-/// `ψ(u) = (1 + u^2) atanh(u) - u` given `atanh_u = atanh(u)` (not read for `u < 0.2`, where the
-/// series of `cap_psi` replaces the cancelling closed form).
+/// `ψ(u) = (1 + u^2) atanh(u) - u` given `atanh_u = atanh(u)` (not read for `u <`
+/// [`CAP_SERIES_U`], where `ψ = u (u^2 + (1 + u^2) T(u^2))` with `T` = [`cap_atanh_tail`], a sum
+/// of positive terms, replaces the cancelling closed form).
 pub fn cap_psi_at(u: f64, atanh_u: f64) -> f64 {
-    if u >= 0.2 {
+    if u >= CAP_SERIES_U {
         return (1.0 + u * u) * atanh_u - u;
     }
-    // Horner in u^2 over the 13 terms j = 1..=13 (the first omitted, j = 14, is below
-    // 0.2^26 = 6.7e-19 of the first)
-    let u2 = u * u;
-    let mut s = 0.0;
-    for c in CAP_PSI_SERIES.iter().rev() {
-        s = s * u2 + c;
-    }
-    s * u * u2
+    let x = u * u;
+    u * (x + (1.0 + x) * cap_atanh_tail(x))
 }
 
-/// `4j / (4j^2 - 1)`, `j = 1..=13`: the coefficients of `u^(2j+1)` in [`cap_psi`].
-const CAP_PSI_SERIES: [f64; 13] = {
-    let mut c = [0.0; 13];
-    let mut j = 0;
-    while j < 13 {
-        let jf = (j + 1) as f64;
-        c[j] = 4.0 * jf / (4.0 * jf * jf - 1.0);
-        j += 1;
-    }
-    c
-};
+/// `T(x) = Σ_{k>=1} x^k / (2k + 1)` for `0 <= x < CAP_SERIES_U^2 = 0.04`, so that
+/// `atanh(u) = u (1 + T(u^2))` for `u < 0.2` without a logarithm. Thirteen terms: the first
+/// omitted one, `x^14 / 29`, is below `2e-18 T(x)` there (`T >= x / 3`). By Estrin's scheme
+/// (independent pairs, then powers `x^2`, `x^4`, `x^8`: a chain of 5 products instead of
+/// Horner's 13; plain products and sums, no fused multiply-add, so every build rounds alike).
+pub fn cap_atanh_tail(x: f64) -> f64 {
+    // a_k = 1 / (2k + 3), k = 0..=12: T = x Σ a_k x^k
+    const A: [f64; 13] = {
+        let mut a = [0.0; 13];
+        let mut k = 0;
+        while k < 13 {
+            a[k] = 1.0 / (2 * k + 3) as f64;
+            k += 1;
+        }
+        a
+    };
+    let x2 = x * x;
+    let x4 = x2 * x2;
+    let x8 = x4 * x4;
+    let q0 = (A[0] + A[1] * x) + (A[2] + A[3] * x) * x2;
+    let q1 = (A[4] + A[5] * x) + (A[6] + A[7] * x) * x2;
+    let q2 = (A[8] + A[9] * x) + (A[10] + A[11] * x) * x2;
+    let r0 = q0 + q1 * x4;
+    let r1 = q2 + A[12] * x4;
+    x * (r0 + r1 * x8)
+}
 
 impl Geometry {
     /// The canonical sphere, `R = 1`.

@@ -11,7 +11,7 @@ use super::dense::{pow15, pow15_increment};
 use std::sync::OnceLock;
 
 use crate::model::contact::Geometry;
-use crate::model::geometry::{cap_psi_at, Cap};
+use crate::model::geometry::{cap_atanh_tail, cap_psi_at, Cap, CAP_SERIES_U};
 
 /// Below this ratio `|δ| / d` an increment `w(d + δ) - w(d)` of a power law is formed without
 /// the difference (which loses `d / |δ|` units in the last place of the increment, at most 20
@@ -344,7 +344,8 @@ fn cap_table() -> &'static (f64, Vec<(f64, f64)>) {
 /// beyond the table. The cubic Hermite interpolant of [`cap_table`] (error below about 1e-10
 /// on 512 cells, checked in the tests) and one Newton step on `u atanh(u) = y`, which squares
 /// that error; `atanh` at the corrected point by its Taylor series from the first (the step
-/// is below 1e-9, so the cubic term is below the round-off): one logarithm per call.
+/// is below 1e-9, so the cubic term is below the round-off): one logarithm per call for
+/// `u >= 0.2`, none below, where `atanh` and `ψ` come from the series of [`cap_atanh_tail`].
 fn cap_point(y: f64) -> Option<(f64, f64, f64)> {
     let (hv, nodes) = cap_table();
     let x = y.sqrt() * (CAP_CELLS as f64 / CAP_V_MAX);
@@ -359,12 +360,21 @@ fn cap_point(y: f64) -> Option<(f64, f64, f64)> {
         + (t3 - 2.0 * t2 + t) * hv * m0
         + (-2.0 * t3 + 3.0 * t2) * u1
         + (t3 - t2) * hv * m1;
-    let at = u.atanh();
+    let at = if u < CAP_SERIES_U {
+        u + u * cap_atanh_tail(u * u)
+    } else {
+        // (libm's log1p behind atanh costs about twice its log; the quotient's rounding
+        // moves the result by at most 0.8e-16 / atanh(u) relative, 2 units in the last place)
+        0.5 * ((1.0 + u) / (1.0 - u)).ln()
+    };
     let inv_m = 1.0 / (1.0 - u * u);
     let step = (y - u * at) / (at + u * inv_m);
     let at = at + step * inv_m * (1.0 + step * u * inv_m);
+    // 1 / (1 - u^2) at the corrected point to first order in the step (its square, below
+    // (1e-9 inv_m)^2, is under the round-off)
+    let inv_m = inv_m * (1.0 + 2.0 * u * step * inv_m);
     let u = u + step;
-    Some((u, cap_psi_at(u, at), at + u / (1.0 - u * u)))
+    Some((u, cap_psi_at(u, at), at + u * inv_m))
 }
 
 #[cfg(test)]
