@@ -566,9 +566,8 @@ mod tests {
 
     #[test]
     fn a_series_of_one_point_is_a_marker() {
-        let dir = std::env::temp_dir().join(format!("mdr-plot-marker-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join("chart.svg");
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("chart.svg");
         let count = |series: &[(String, Vec<(f64, f64)>)]| {
             line_chart_svg(&path, "t", "x", "y", series).unwrap();
             let svg = std::fs::read_to_string(&path).unwrap();
@@ -590,6 +589,5 @@ mod tests {
             ("b".to_string(), vec![(0.0, 0.0), (1.0, 0.2)]),
         ];
         assert_eq!(count(&lines), (0, axes + 4));
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

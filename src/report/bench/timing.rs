@@ -633,7 +633,7 @@ pub struct ShapeTiming {
 }
 
 /// Largest ratio of a shape's time per impact to the paraboloid's that [`shape_timing_table`]
-/// reports as met (the target of the profile issue).
+/// reports as met (the design target of the indenter shapes).
 pub const SHAPE_TARGET_RATIO: f64 = 1.5;
 
 /// Velocities (m/s) of [`shape_timing`].
