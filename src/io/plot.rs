@@ -301,7 +301,8 @@ pub fn line_chart_svg(
 /// The corner of a [`line_chart_svg`] for its legend: the one whose box (about the legend's
 /// size in the 900 x 560 chart: 6 px per character of the longest name and 60 px more across,
 /// 16 px per line and 16 px more down, over a plot area of about 800 x 460 px) covers the
-/// fewest points of the lines (each segment sampled at 17 points), the upper right on a tie.
+/// fewest points of the lines (each segment sampled at 17 points, a series of one point, drawn
+/// as a marker, weighing as much as a segment), the upper right on a tie.
 fn legend_corner(
     series: &[(String, Vec<(f64, f64)>)],
     (x0, x1): (f64, f64),
@@ -323,7 +324,14 @@ fn legend_corner(
     ];
     let mut covered = [0usize; 4];
     for (_, pts) in series {
-        for seg in pts.windows(2) {
+        // a lone point is the segment from itself to itself
+        let lone = [pts.first().copied().unwrap_or_default(); 2];
+        let segments = if pts.len() == 1 {
+            lone.windows(2)
+        } else {
+            pts.windows(2)
+        };
+        for seg in segments {
             for k in 0..=16 {
                 let f = k as f64 / 16.0;
                 let x = (seg[0].0 + f * (seg[1].0 - seg[0].0) - x0) / (x1 - x0);
@@ -562,6 +570,13 @@ mod tests {
             ("c".to_string(), vec![(0.0, 0.95), (0.3, 0.9)]),
         ];
         assert_eq!(corner(&rising), "LowerRight");
+        // markers (series of one point) count too: one in the upper right moves it
+        let markers = [
+            ("a".to_string(), vec![(0.95, 0.95)]),
+            ("b".to_string(), vec![(0.0, 0.0)]),
+            ("c".to_string(), vec![(0.05, 0.95)]),
+        ];
+        assert_eq!(corner(&markers), "LowerRight");
     }
 
     #[test]
