@@ -4,6 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use plotters::prelude::*;
+use rayon::prelude::*;
 
 use super::{Estimate, FitResult, ModelKind, Prediction};
 use crate::error::{Error, Result};
@@ -296,7 +297,7 @@ pub struct Written {
 pub type Curve = (usize, String, Vec<Prediction>);
 
 /// The fitted curves for the plot: per setup used, `PLOT_POINTS` log-spaced velocities over the
-/// data's range.
+/// data's range (predicted in parallel, rayon; in order).
 pub fn curves(r: &FitResult) -> Result<Vec<Curve>> {
     let mut out = Vec::new();
     for (i, s) in r.data.setups.iter().enumerate() {
@@ -318,6 +319,7 @@ pub fn curves(r: &FitResult) -> Result<Vec<Curve>> {
             (lo / 2.0, hi * 2.0)
         };
         let pts = (0..PLOT_POINTS)
+            .into_par_iter()
             .map(|k| {
                 let x = (lo.ln() + (hi / lo).ln() * k as f64 / (PLOT_POINTS - 1) as f64).exp();
                 r.predict(s.sphere, x)
