@@ -297,7 +297,8 @@ pub struct Written {
 pub type Curve = (usize, String, Vec<Prediction>);
 
 /// The fitted curves for the plot: per setup used, `PLOT_POINTS` log-spaced velocities over the
-/// data's range (predicted in parallel, rayon; in order).
+/// data's range (predicted in parallel, rayon; in order, and the error of a failed prediction is
+/// the first in that order).
 pub fn curves(r: &FitResult) -> Result<Vec<Curve>> {
     let mut out = Vec::new();
     for (i, s) in r.data.setups.iter().enumerate() {
@@ -324,6 +325,8 @@ pub fn curves(r: &FitResult) -> Result<Vec<Curve>> {
                 let x = (lo.ln() + (hi / lo).ln() * k as f64 / (PLOT_POINTS - 1) as f64).exp();
                 r.predict(s.sphere, x)
             })
+            .collect::<Vec<Result<_>>>()
+            .into_iter()
             .collect::<Result<Vec<_>>>()?;
         out.push((i, s.name.clone(), pts));
     }
