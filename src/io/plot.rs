@@ -325,8 +325,9 @@ fn legend_corner(
     let mut covered = [0usize; 4];
     for (_, pts) in series {
         // a lone point is the segment from itself to itself
-        let lone = [pts.first().copied().unwrap_or_default(); 2];
-        let segments = if pts.len() == 1 {
+        let lone;
+        let segments = if let [p] = pts.as_slice() {
+            lone = [*p; 2];
             lone.windows(2)
         } else {
             pts.windows(2)

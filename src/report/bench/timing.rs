@@ -711,6 +711,10 @@ pub fn shape_timing_table(rows: &[ShapeTiming]) -> String {
             r.ratio
         );
     }
+    let shapes = rows.len().saturating_sub(1);
+    if shapes == 0 {
+        return s;
+    }
     // judged on the printed ratio, so that the verdict never contradicts the table
     let missed: Vec<String> = rows
         .iter()
@@ -719,10 +723,6 @@ pub fn shape_timing_table(rows: &[ShapeTiming]) -> String {
         })
         .map(|r| format!("{} ({:.2})", r.shape, r.ratio))
         .collect();
-    let shapes = rows.len().saturating_sub(1);
-    if shapes == 0 {
-        return s;
-    }
     let _ = writeln!(
         s,
         "\nAt most {SHAPE_TARGET_RATIO}x the paraboloid: {}.",
