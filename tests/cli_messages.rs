@@ -115,3 +115,60 @@ fn prony_terms_have_a_limit() {
     let o = run(&["run", "s.toml"], dir.path());
     assert_one_line_error(&o, &format!("t.csv: {n} Prony terms exceed the limit"));
 }
+
+/// A file of blank lines is not called empty.
+#[test]
+fn blank_lines_only_are_not_an_empty_file() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("b.csv"), "\n\n").unwrap();
+    let o = run(&["cor", "--input", "b.csv"], dir.path());
+    assert_one_line_error(&o, "the file holds only 2 blank line(s)");
+}
+
+/// A full disk on stdout is the command's one-line error (exit 1), not a panic.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_full_stdout_is_an_error_not_a_panic() {
+    let dir = tempfile::tempdir().unwrap();
+    for args in [
+        &["run"][..],
+        &["cor", "--nu", "0.45", "--p2", "0.01", "--p3", "1"][..],
+    ] {
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_mdr-impact"))
+            .args(args)
+            .current_dir(dir.path())
+            .env("CI", "true")
+            .stdout(std::fs::File::create("/dev/full").unwrap())
+            .output()
+            .unwrap();
+        assert_one_line_error(&o, "<stdout>: No space left on device");
+    }
+}
+
+/// An elastic standard solid (`g_1 = 0`) and a radius far below any ball: the summary holds
+/// words where a ratio has no finite value, never `inf` or `NaN`.
+#[test]
+fn summaries_print_no_inf() {
+    let dir = tempfile::tempdir().unwrap();
+    let elastic = "[material]\ng_inf = 1.0e6\ng_1 = 0.0\neta = 500.0\npoisson = 0.49\n";
+    for (radius, material, want) in [
+        (
+            "5e-3",
+            elastic,
+            "p2 unbounded (no relaxing branch: elastic)",
+        ),
+        ("1e-300", STANDARD, "d_max/R = above 1e308"),
+    ] {
+        std::fs::write(dir.path().join("s.toml"), scene(radius, material)).unwrap();
+        let o = run(&["run", "s.toml"], dir.path());
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert!(o.status.success(), "{}", stderr(&o));
+        assert!(out.contains(want), "{want}: {out}");
+        let all = format!("{out}{}", stderr(&o));
+        let words = all.split(|c: char| c.is_whitespace() || ",()=".contains(c));
+        assert!(
+            !words.into_iter().any(|w| w == "inf" || w == "NaN"),
+            "{all}"
+        );
+    }
+}

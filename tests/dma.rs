@@ -217,6 +217,77 @@ fn cli_refuses_bad_data_in_one_line_and_writes_nothing() {
     }
 }
 
+/// `--t-ref` that no law can reach is refused by name, never a panic or a NaN deep inside;
+/// isotherms that overlap too little are not said to be disjoint.
+#[test]
+fn cli_refuses_unreachable_references_and_thin_overlaps_in_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("ex.csv"), example()).unwrap();
+    for (t_ref, want) in [
+        ("nan", "--t-ref = NaN is out of range"),
+        ("inf", "--t-ref = inf is out of range"),
+        ("1e4", "a WLF law referred to --t-ref 10000 °C needs c2 >"),
+        (
+            "-150",
+            "choose a reference temperature nearer the measured ones",
+        ),
+    ] {
+        let o = common::run(
+            &["prony", "ex.csv", "--out", "res", "--t-ref", t_ref],
+            dir.path(),
+        );
+        let err = common::stderr(&o);
+        assert_eq!(o.status.code(), Some(1), "--t-ref {t_ref}: {err}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(want), "{want}: {err}");
+    }
+    let thin = "temperature,frequency,storage,loss\n20,1,1e6,1e5\n20,10,2e6,2e5\n\
+                40,1,1e6,1e5\n40,10,2e6,2e5\n";
+    std::fs::write(dir.path().join("thin.csv"), thin).unwrap();
+    let o = common::run(&["prony", "thin.csv", "--out", "res"], dir.path());
+    let err = common::stderr(&o);
+    assert!(err.contains("share fewer than 3 points"), "{err}");
+    let o = common::run(&["prony", "ex.csv", "--terms", "-1"], dir.path());
+    assert!(common::stderr(&o).contains("expected auto or a count N >= 1"));
+}
+
+/// The fit does not depend on the unit of the moduli (the example in Pa, and times 1e±200),
+/// and a larger `--terms` cap never fits worse than a smaller one.
+#[test]
+fn fit_is_scale_free_and_monotone_in_the_cap() {
+    let d = data::parse(&example(), "ex.csv", data::ModulusKind::Shear, 0.5).unwrap();
+    let base = dma::fit(&d, &dma::PronyOptions::new("ex.csv")).unwrap();
+    for scale in [1e200, 1e-200] {
+        let mut s = d.clone();
+        for iso in s.isotherms.iter_mut() {
+            for p in iso.points.iter_mut() {
+                (p.1, p.2) = (p.1 * scale, p.2 * scale);
+            }
+        }
+        let r = dma::fit(&s, &dma::PronyOptions::new("ex.csv")).unwrap();
+        assert_eq!(r.series.terms.len(), base.series.terms.len(), "{scale:e}");
+        assert!((r.series.g_inf / scale / base.series.g_inf - 1.0).abs() < 1e-9);
+        assert!((r.rms_rel_error - base.rms_rel_error).abs() < 1e-9);
+    }
+    let mut last = f64::INFINITY;
+    for cap in 1..=4 {
+        let opts = dma::PronyOptions {
+            max_terms: Some(cap),
+            ..dma::PronyOptions::new("ex.csv")
+        };
+        let r = dma::fit(&d, &opts).unwrap();
+        assert!(r.series.terms.len() <= cap);
+        assert!(
+            r.rms_rel_error <= last,
+            "cap {cap}: {} > {last}",
+            r.rms_rel_error
+        );
+        last = r.rms_rel_error;
+        // a cap this small misses the example's data, and says so
+        assert!(r.warnings.iter().any(|w| w.contains("misses the data")));
+    }
+}
+
 #[test]
 fn tensile_data_are_converted_and_noise_level_loss_is_flagged() {
     let text = "omega,storage,loss\n1,3e6,3e5\n10,6e6,6e5\n100,9e6,9e2\n";

@@ -314,6 +314,25 @@ fn cli_run_json_and_curve_angle() {
         String::from_utf8_lossy(&bad.stderr).trim().lines().count(),
         1
     );
+    // from 0°, where the tangential CoRs divide by zero: empty cells (null in JSON), never NaN,
+    // and the plots of the one angle left
+    let zero = dir.path().join("zero");
+    let out = Command::new(env!("CARGO_BIN_EXE_mdr-impact"))
+        .args(["curve", "--angle", "0:60:2", "--speed", "1.0", "--out"])
+        .arg(&zero)
+        .arg(&scene)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let csv = std::fs::read_to_string(zero.join("curve.csv")).unwrap();
+    assert!(!csv.contains("NaN") && !csv.contains("inf"), "{csv}");
+    let row0: Vec<&str> = csv.lines().nth(1).unwrap().split(',').collect();
+    assert_eq!((row0[2], row0[3]), ("", ""), "{csv}");
+    assert!(zero.join("tangential_cor.svg").exists());
 }
 
 #[test]

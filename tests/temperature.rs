@@ -75,6 +75,25 @@ fn bad_temperatures_are_refused_naming_the_key() {
     // an unknown law
     let bad = scene(TAUS, Some(0.0), false) + "\n[material.shift]\nvft = { a = 1.0 }\n";
     assert!(Scene::parse(&bad).is_err());
+    // both laws, or neither: the keys named, not serde's count of enum elements
+    let arr = "arrhenius = { activation_energy = 1.0e5, t_ref = 25.0 }\n";
+    let both = scene(TAUS, Some(0.0), true) + arr;
+    let e = Scene::parse(&both).unwrap_err().to_string();
+    assert!(
+        e.contains("shift table: cannot read 'wlf and arrhenius'"),
+        "{e}"
+    );
+    let neither = scene(TAUS, Some(0.0), false) + "\n[material.shift]\n";
+    let e = Scene::parse(&neither).unwrap_err().to_string();
+    assert!(e.contains("neither wlf nor arrhenius"), "{e}");
+    // hot enough that a_T leaves a double's range: the temperature refused with its bound
+    let hot = scene(TAUS, Some(26.0), false)
+        + "\n[material.shift]\narrhenius = { activation_energy = 1.0e9, t_ref = 25.0 }\n";
+    let e = Scene::parse(&hot).unwrap_err().to_string();
+    assert!(
+        e.contains("[impact] temperature = 26 °C") && e.contains("allowed: temperature < 25.5"),
+        "{e}"
+    );
 }
 
 #[test]

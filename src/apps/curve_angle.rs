@@ -166,8 +166,10 @@ pub fn run_angles(
         .collect()
 }
 
-/// The CSV text of a curve ([`CSV_HEADER`]).
+/// The CSV text of a curve ([`CSV_HEADER`]); a ratio without a value (the tangential CoRs at
+/// 0°, where the velocity they divide by is zero) is an empty cell, as it is `null` in JSON.
 pub fn csv_text(rows: &[AngleRow]) -> String {
+    let fmt = |x: f64| if x.is_finite() { fmt(x) } else { String::new() };
     let mut out = format!("{CSV_HEADER}\n");
     for r in rows {
         out.push_str(&format!(

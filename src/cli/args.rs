@@ -448,7 +448,7 @@ pub struct PronyArgs {
     /// The DMA data file.
     pub data: PathBuf,
     /// auto, or at most N terms.
-    #[arg(long, default_value = "auto")]
+    #[arg(long, default_value = "auto", allow_hyphen_values = true)]
     pub terms: String,
     /// shear (G', G'') or tensile (E', E'', converted with --nu).
     #[arg(long, value_enum, default_value_t = values::DmaModulus::Shear)]

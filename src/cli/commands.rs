@@ -15,8 +15,31 @@ use mdr_impact::{solve, Error, Groups, Impact, Material, SolveOptions};
 use super::args::*;
 use super::{progress_bar, with_progress, with_spinner, Failure, Outcome};
 
-/// Run one parsed command (none: `run` on the default scene).
+/// `println!` to stdout that returns a write error (a full disk, a closed file) as the
+/// command's error instead of panicking.
+macro_rules! outln {
+    ($($t:tt)*) => {
+        writeln!(std::io::stdout(), $($t)*).map_err(|e| Failure::from(Error::io("<stdout>", e)))?
+    };
+}
+
+/// `print!` to stdout, as [`outln`].
+macro_rules! out {
+    ($($t:tt)*) => {
+        write!(std::io::stdout(), $($t)*).map_err(|e| Failure::from(Error::io("<stdout>", e)))?
+    };
+}
+
+/// Run one parsed command (none: `run` on the default scene); what it printed is flushed, and a
+/// failed write is its error.
 pub fn run(command: Option<Command>) -> Outcome {
+    run_command(command)?;
+    std::io::stdout()
+        .flush()
+        .map_err(|e| Error::io("<stdout>", e).into())
+}
+
+fn run_command(command: Option<Command>) -> Outcome {
     let default = RunArgs {
         scene: None,
         json: false,
@@ -72,7 +95,7 @@ fn cmd_run(RunArgs { scene, json, out }: RunArgs) -> Outcome {
     }
     output::write_outputs(&rendered)?;
     if json {
-        println!(
+        outln!(
             "{}",
             oblique_out::oblique_json(&scene.impact, opts, ob, &oo)
         );
@@ -83,13 +106,13 @@ fn cmd_run(RunArgs { scene, json, out }: RunArgs) -> Outcome {
                 Some(t) => format!("{t} °C"),
                 None => "its reference temperature".to_string(),
             };
-            println!(
+            outln!(
                 "{:<28}a_T = {:.6e} (log10 a_T = {log10_a:.4}) at {at}, {table}",
                 "time-temperature shift",
                 10f64.powf(log10_a)
             );
         }
-        print!(
+        out!(
             "{}",
             oblique_out::oblique_summary(&scene.impact, opts, ob, &oo)
         );
@@ -98,11 +121,11 @@ fn cmd_run(RunArgs { scene, json, out }: RunArgs) -> Outcome {
     for (what, path) in files.described() {
         match json {
             true => eprintln!("{what:<28}{}", path.display()),
-            false => println!("{what:<28}{}", path.display()),
+            false => outln!("{what:<28}{}", path.display()),
         }
     }
     if !json && !files.any() {
-        println!(
+        outln!(
             "{:<28}none (ask with --out DIR or the scene's [output])",
             "files written"
         );
@@ -143,7 +166,7 @@ fn cmd_curve(
         curve::run(&scene.impact, &scene.options, &range, tick)
     })?;
     let written = curve::write_outputs(&out, &c, log, &name)?;
-    print!("{}", curve::summary(&c, Some(&written)));
+    out!("{}", curve::summary(&c, Some(&written)));
     Ok(())
 }
 
@@ -165,7 +188,7 @@ fn cmd_curve_angle(scene: Option<&Path>, spec: &str, speed: f64, out: &Path) -> 
         )
     })?;
     for path in ca::write_outputs(out, &rows, &name)? {
-        println!("{:<28}{}", "written", path.display());
+        outln!("{:<28}{}", "written", path.display());
     }
     Ok(())
 }
@@ -192,7 +215,7 @@ fn cmd_curve_temperature(scene: Option<&Path>, spec: &str, out: &Path) -> Outcom
     })?;
     let title = format!("Coefficient of restitution against temperature: {name}");
     let written = ct::write_outputs(out, &rows, &title)?;
-    print!("{}", ct::summary(&rows, Some(&written)));
+    out!("{}", ct::summary(&rows, Some(&written)));
     Ok(())
 }
 
@@ -206,9 +229,9 @@ fn cmd_dem(a: DemArgs) -> Outcome {
         dem::run(&scene.impact, &scene.options, &range, modulus, tick)
     })?;
     let written = dem::write_outputs(&a.out, &report, format)?;
-    print!("{}", report.text(format));
+    out!("{}", report.text(format));
     if format == dem::Format::Json {
-        println!();
+        outln!();
     }
     for w in &report.warnings {
         eprintln!("warning: {w}");
@@ -254,13 +277,13 @@ fn cmd_cor(a: CorArgs) -> Outcome {
     let impact = Impact::from_groups(groups)?;
     let o = solve(&impact, &opts)?;
     if a.json {
-        println!("{}", output::groups_json(&groups, &impact, &opts, &o));
+        outln!("{}", output::groups_json(&groups, &impact, &opts, &o));
         return Ok(());
     }
     if let Some(why) = o.fallback_reason() {
         eprintln!("note: answered by {} ({})", o.solver, escape_text(&why));
     }
-    println!("{}", o.cor);
+    outln!("{}", o.cor);
     Ok(())
 }
 
@@ -321,21 +344,21 @@ fn cmd_validate(
     if check {
         let c = with_progress(units, "validate", |tick| validate::check(out, tick))?;
         if let Some(t) = validate::per_regime(&c.fresh) {
-            println!("{t}");
+            outln!("{t}");
         }
         if let validate::Staleness::Stale { line, .. } = c.staleness {
             let report = out.to_path_buf();
             return Err(Failure::Stale { report, line });
         }
-        println!("{} is current", out.display());
+        outln!("{} is current", out.display());
     } else {
         let fresh = with_progress(units, "validate", |tick| {
             validate::regenerate(out, figures, tick)
         })?;
         if let Some(t) = validate::per_regime(&fresh) {
-            println!("{t}");
+            outln!("{t}");
         }
-        println!("wrote {}", out.display());
+        outln!("wrote {}", out.display());
     }
     Ok(())
 }
@@ -355,10 +378,10 @@ fn cmd_bench(a: BenchArgs) -> Outcome {
     let units = bench::full_units(opts)?;
     let r = with_progress(units, "bench", |tick| bench::run_full(opts, tick))?;
     r.write_files(out)?;
-    print!("{}", r.text());
+    out!("{}", r.text());
     if !opts.quick {
         sections::update_section(report, &sections::PERFORMANCE, &r.section())?;
-        println!("performance section of {} updated", report.display());
+        outln!("performance section of {} updated", report.display());
     }
     Ok(())
 }
@@ -377,19 +400,19 @@ fn cmd_stress(a: StressArgs) -> Outcome {
     }
     let r = with_progress(rows as u64, "stress", |tick| stress::run(rows, seed, tick));
     let section = r.markdown();
-    print!("{section}");
+    out!("{section}");
     let csv = out.join("stress_outside.csv");
     r.write_problems_csv(&csv)?;
     let (n, path) = (r.problems.len(), csv.display());
     match report {
         Some(report) => {
             sections::update_section(report, &sections::STRESS, &section)?;
-            println!(
+            outln!(
                 "stress section of {} updated; {n} solves that broke the contract in {path}",
                 report.display()
             );
         }
-        None => println!(
+        None => outln!(
             "no report updated (no {DEFAULT_REPORT} here; --report FILE names one); {n} solves \
              that broke the contract in {path}"
         ),
@@ -406,7 +429,7 @@ const DEFAULT_REPORT: &str = "VALIDATION.md";
 fn cmd_reference(a: ReferenceArgs) -> Outcome {
     let written = mdr_impact::solvers::theory::generate_reference(&a.out)?;
     let (n, manifest) = (written.files.len(), written.manifest.display());
-    println!("wrote {n} files and {manifest}");
+    outln!("wrote {n} files and {manifest}");
     Ok(())
 }
 
@@ -435,8 +458,8 @@ fn cmd_sweep(a: SweepArgs) -> Outcome {
     let summary = with_progress(points.len() as u64, &out.display().to_string(), |tick| {
         sweep::run(&points, out, opts, tick)
     })?;
-    println!("{summary}");
-    println!("{:<28}{}", "rows written to", out.display());
+    outln!("{summary}");
+    outln!("{:<28}{}", "rows written to", out.display());
     Ok(())
 }
 
@@ -456,11 +479,11 @@ fn cmd_fit(a: FitArgs) -> Outcome {
     let result = fit::fit(&model, &data, &fixed)?;
     let written = fit::report::write_outputs(&a.out, &result)?;
     if a.json {
-        println!("{}", fit::report::json(&result));
+        outln!("{}", fit::report::json(&result));
         eprintln!("material written to {}", written.toml.display());
         eprintln!("plot written to {}", written.svg.display());
     } else {
-        print!("{}", fit::report::summary(&result, Some(&written)));
+        out!("{}", fit::report::summary(&result, Some(&written)));
     }
     Ok(())
 }
@@ -489,10 +512,10 @@ fn cmd_fit_study(a: FitStudyArgs) -> Outcome {
             eprintln!("per-set outcomes written to {}", p.display());
         }
         let section = fit::study_box::markdown(&r);
-        print!("{section}");
+        out!("{section}");
         if let Some(p) = report {
             sections::update_section(p, &sections::FIT_BOX, &section)?;
-            println!("fit-box section of {} updated", p.display());
+            outln!("fit-box section of {} updated", p.display());
         }
         return Ok(());
     }
@@ -516,10 +539,10 @@ fn cmd_fit_study(a: FitStudyArgs) -> Outcome {
         reports.push(r?);
     }
     let section = fit::study::markdown(&reports);
-    print!("{section}");
+    out!("{section}");
     if let Some(p) = report {
         sections::update_section(p, &sections::FIT_STUDY, &section)?;
-        println!("fit section of {} updated", p.display());
+        outln!("fit section of {} updated", p.display());
     }
     Ok(())
 }
@@ -544,7 +567,7 @@ fn cmd_figures(args: FigureArgs) -> Outcome {
     };
     let report = figures::run(&opts, &|| bar.inc(1));
     bar.finish_and_clear();
-    print!("{}", report?);
+    out!("{}", report?);
     Ok(())
 }
 
@@ -560,10 +583,10 @@ fn cmd_prony(a: PronyArgs) -> Outcome {
     let report = dma::run(&options)?;
     dma::write_outputs(&a.out, &report)?;
     if a.json {
-        println!("{}", dma::json(&report));
+        outln!("{}", dma::json(&report));
     } else {
-        print!("{}", dma::summary(&report));
-        println!("{:<28}{}", "written", a.out.display());
+        out!("{}", dma::summary(&report));
+        outln!("{:<28}{}", "written", a.out.display());
     }
     Ok(())
 }

@@ -82,7 +82,14 @@ pub fn parse_numeric<'a>(file: &str, bytes: &'a [u8], header: &[&str]) -> Result
     if !header_seen {
         return Err(bad(
             1,
-            format!("no header: expected '{names}' (the file is empty)"),
+            if out.skipped_blank_lines.is_empty() {
+                format!("no header: expected '{names}' (the file is empty)")
+            } else {
+                format!(
+                    "no header: expected '{names}' (the file holds only {} blank line(s))",
+                    out.skipped_blank_lines.len()
+                )
+            },
         ));
     }
     // the data lines in parallel; the first bad line in file order is the error

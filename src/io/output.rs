@@ -348,6 +348,14 @@ pub fn summary(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> String {
     }
     let geq = impact.equivalent_relaxation();
     match impact.groups() {
+        // p2 = g_inf / g_1 has no finite value without a relaxing branch (g_1 = 0): elastic
+        Some(g) if !g.p2.is_finite() => line(
+            "groups (Eq. 11)",
+            format!(
+                "p1 = nu = {:.6}, p2 unbounded (no relaxing branch: elastic), p3 = {:.6e}",
+                g.nu, g.p3
+            ),
+        ),
         Some(g) => line(
             "groups (Eq. 11)",
             format!(
@@ -416,8 +424,9 @@ pub fn summary(impact: &Impact, opts: &SolveOptions, o: &Outcome) -> String {
     let v = Validity::of(impact, o);
     let mut measures = if impact.sphere().radius().is_finite() {
         format!(
-            "a_max/R = {:.3}, d_max/R = {:.3}",
-            v.contact_radius_ratio, v.indentation_ratio
+            "a_max/R = {}, d_max/R = {}",
+            crate::model::validity::ratio_text(v.contact_radius_ratio),
+            crate::model::validity::ratio_text(v.indentation_ratio)
         )
     } else {
         format!(

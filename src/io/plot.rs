@@ -224,12 +224,17 @@ pub fn line_chart_svg(
                 }
             }
         }
-        if !(x0 < x1) {
+        if !(x0 <= x1) {
             return Err(Error::NotSupported {
                 solver: "plot",
-                what: "nothing to plot (no finite x range)".into(),
+                what: "nothing to plot (no finite point)".into(),
             }
             .at(path.display().to_string()));
+        }
+        if x0 == x1 {
+            // every point at one x: a range around it
+            let w = if x0 == 0.0 { 1.0 } else { 0.05 * x0.abs() };
+            (x0, x1) = (x0 - w, x1 + w);
         }
         if !(y0 < y1) {
             y1 = y0 + 1.0;

@@ -62,8 +62,13 @@ fn density(out: &mut Vec<String>, name: &str, m: f64, r: f64) {
     let rho = sphere_density(m, r);
     let (lo, hi) = DENSITY_RANGE;
     if !(lo..=hi).contains(&rho) {
+        let rho = if rho.is_finite() {
+            format!("{rho:.3e}")
+        } else {
+            "above 1e308".to_string()
+        };
         out.push(format!(
-            "{name}: mass {m:.4e} kg and radius {r:.4e} m imply a density of {rho:.3e} kg/m^3, \
+            "{name}: mass {m:.4e} kg and radius {r:.4e} m imply a density of {rho} kg/m^3, \
              outside {lo:.0}-{hi:.0} kg/m^3 of solids: check the units (kg and m, not g and mm)"
         ));
     }

@@ -179,9 +179,10 @@ impl Validity {
         }
         if exact && x > EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO {
             warnings.push(format!(
-                "contact radius a_max/R = {x:.3} exceeds {EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO}: \
+                "contact radius a_max/R = {} exceeds {EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO}: \
                  the exact sphere is solved on a half-space with linear strains, and a contact \
-                 this wide is neither small against the ball nor of small strain"
+                 this wide is neither small against the ball nor of small strain",
+                ratio_text(x)
             ));
         } else if !exact && x > PARABOLOID_MAX_CONTACT_RADIUS_RATIO {
             let differs = if x < 1.0 {
@@ -195,9 +196,10 @@ impl Validity {
                 "the contact is wider than the sphere itself".to_string()
             };
             warnings.push(format!(
-                "contact radius a_max/R = {x:.3} exceeds {PARABOLOID_MAX_CONTACT_RADIUS_RATIO}: \
+                "contact radius a_max/R = {} exceeds {PARABOLOID_MAX_CONTACT_RADIUS_RATIO}: \
                  the paraboloid of Hertz no longer stands in for the sphere and strains are not \
-                 small; {differs}; these numbers are the paraboloid's"
+                 small; {differs}; these numbers are the paraboloid's",
+                ratio_text(x)
             ));
         }
         let wave_transit_ratio = densities
@@ -225,6 +227,20 @@ impl Validity {
             wave_transit_ratio,
             warnings,
         }
+    }
+}
+
+/// A dimensionless ratio for a message: three decimals up to 1e6, then three significant
+/// digits with an exponent, and a bound beyond the range of `f64` (never `inf` or `NaN`).
+pub fn ratio_text(x: f64) -> String {
+    if x.is_nan() {
+        "undefined".to_string()
+    } else if x.is_infinite() {
+        "above 1e308".to_string()
+    } else if x.abs() < 1e6 {
+        format!("{x:.3}")
+    } else {
+        format!("{x:.3e}")
     }
 }
 

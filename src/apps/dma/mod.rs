@@ -43,6 +43,14 @@ pub const REFINE_SPAN: f64 = 0.5;
 /// Refinement passes (Prony fit, then every factor again).
 pub const REFINE_PASSES: usize = 2;
 
+/// Largest shift (decades of frequency) of an isotherm to the reference temperature: beyond
+/// it the reduced frequencies leave the range of double precision.
+pub const MAX_SHIFT_DECADES: f64 = 100.0;
+
+/// A fit whose rms relative error of `G'` and `G''` exceeds this is reported: the series
+/// misses the data.
+pub const POOR_FIT_RMS: f64 = 0.1;
+
 /// The inputs of `prony`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PronyOptions {
@@ -189,6 +197,14 @@ fn range(v: &[f64]) -> (f64, f64) {
 /// Shift, fit and report the validated `data` with the options `opts` (its `data` path is
 /// only used as the file name in the report).
 pub fn fit(data: &DmaData, opts: &PronyOptions) -> Result<PronyReport> {
+    if let Some(t) = opts.t_ref {
+        crate::error::check(
+            "--t-ref",
+            t,
+            t > -shift::ZERO_CELSIUS_K,
+            "-273.15 < --t-ref < inf (°C)",
+        )?;
+    }
     let isotherms = data.isotherms.clone();
     let mut warnings = data.warnings.clone();
     let n = isotherms.len();
@@ -233,7 +249,17 @@ pub fn fit(data: &DmaData, opts: &PronyOptions) -> Result<PronyReport> {
             if disjoint(s_a, s_b) && disjoint(l_a, l_b) {
                 return Err(none());
             }
-            let p = shift::pairwise_shift(a, b).ok_or_else(none)?;
+            let p = shift::pairwise_shift(a, b).ok_or_else(|| Error::NotSupported {
+                solver: "prony",
+                what: format!(
+                    "the isotherms at {ta} °C and {tb} °C ({} and {} points) share fewer than \
+                     {} points of each other's frequency range at every shift: measure more \
+                     frequencies per isotherm or at temperatures closer together",
+                    a.x.len(),
+                    b.x.len(),
+                    shift::MIN_OVERLAP_POINTS
+                ),
+            })?;
             if p.rms > POOR_OVERLAP_RMS {
                 warnings.push(format!(
                     "the isotherms at {ta} °C and {tb} °C superpose poorly (rms misfit {:.3} \
@@ -290,6 +316,21 @@ pub fn fit(data: &DmaData, opts: &PronyOptions) -> Result<PronyReport> {
         for s in log_a.iter_mut() {
             *s += f.offset;
         }
+        // a reference far from the data shifts the reduced frequencies out of the range of
+        // double precision (a WLF law diverges at t_ref - c2)
+        let worst = log_a.iter().fold(0.0f64, |m, s| m.max(s.abs()));
+        if !(worst <= MAX_SHIFT_DECADES) {
+            let (t_lo, t_hi) = range(&temps);
+            return Err(Error::NotSupported {
+                solver: "prony --t-ref",
+                what: format!(
+                    "the {} law fitted to the isotherms ({t_lo} °C to {t_hi} °C) shifts them by \
+                     {worst:.3e} decades to --t-ref {t} °C (at most {MAX_SHIFT_DECADES} \
+                     allowed): choose a reference temperature nearer the measured ones",
+                    f.law.kind()
+                ),
+            });
+        }
         if f.rms > POOR_OVERLAP_RMS {
             warnings.push(format!(
                 "the {} law fits the shift factors with an rms residual of {:.3} decades",
@@ -326,6 +367,17 @@ pub fn fit(data: &DmaData, opts: &PronyOptions) -> Result<PronyReport> {
     let points = reduced(&isotherms, &log_a);
     let series = prony_fit::fit_prony(&points, opts.max_terms)?;
     let rms_rel_error = series.rms_rel_error(&points);
+    if !(rms_rel_error <= POOR_FIT_RMS) {
+        warnings.push(format!(
+            "the Prony series misses the data: rms relative error {rms_rel_error:.3} of G' and \
+             G'' (master.csv has both side by side); check the data (a loss modulus far above \
+             the storage modulus, or points that no sum of Maxwell terms can follow){}",
+            match opts.max_terms {
+                Some(n) => format!(", or allow more than --terms {n}"),
+                None => String::new(),
+            }
+        ));
+    }
     let liquid = series.g_inf == 0.0;
     if liquid {
         warnings.push(

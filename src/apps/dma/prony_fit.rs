@@ -157,10 +157,7 @@ impl PronySeries {
             + self
                 .terms
                 .iter()
-                .map(|&(g, t)| {
-                    let u = (omega * t).powi(2);
-                    g * u / (1.0 + u)
-                })
+                .map(|&(g, t)| g * maxwell(omega * t).0)
                 .sum::<f64>()
     }
 
@@ -168,10 +165,7 @@ impl PronySeries {
     pub fn loss(&self, omega: f64) -> f64 {
         self.terms
             .iter()
-            .map(|&(g, t)| {
-                let u = omega * t;
-                g * u / (1.0 + u * u)
-            })
+            .map(|&(g, t)| g * maxwell(omega * t).1)
             .sum()
     }
 
@@ -244,18 +238,35 @@ pub fn fit_times(data: &[(f64, f64, f64)], times: &[f64]) -> Result<PronySeries>
     }
 }
 
+/// `(u^2 / (1 + u^2), u / (1 + u^2))` for `u = omega tau >= 0`, in forms that neither overflow
+/// nor lose the small end (any `u` from 0 to `inf`).
+fn maxwell(u: f64) -> (f64, f64) {
+    if u <= 1.0 {
+        let d = 1.0 + u * u;
+        (u * u / d, u / d)
+    } else {
+        let v = 1.0 / u;
+        (1.0 / (1.0 + v * v), v / (1.0 + v * v))
+    }
+}
+
+/// The fit in units of the data's scale (the geometric mean of every `G'` and `G''`), so that
+/// it is the same for moduli in Pa, GPa or any other unit: the matrix entries are `O(1)`
+/// whatever the magnitude of the moduli (no squares under- or overflow in [`nnls`]).
 fn fit_once(data: &[(f64, f64, f64)], times: &[f64]) -> Result<PronySeries> {
     let m = 2 * data.len();
     let n = times.len() + 1;
+    let log_scale = data.iter().map(|&(_, s, l)| s.ln() + l.ln()).sum::<f64>() / m.max(1) as f64;
+    let scale = log_scale.exp();
     let mut a = DMatrix::<f64>::zeros(m, n);
     let b = DVector::<f64>::from_element(m, 1.0);
     for (r, &(w, s, l)) in data.iter().enumerate() {
+        let (s, l) = (s / scale, l / scale);
         a[(2 * r, 0)] = 1.0 / s;
         for (i, &t) in times.iter().enumerate() {
-            let u = w * t;
-            let d = 1.0 + u * u;
-            a[(2 * r, i + 1)] = u * u / d / s;
-            a[(2 * r + 1, i + 1)] = u / d / l;
+            let (fs, fl) = maxwell(w * t);
+            a[(2 * r, i + 1)] = fs / s;
+            a[(2 * r + 1, i + 1)] = fl / l;
         }
     }
     let x = nnls(&a, &b)?;
@@ -263,16 +274,19 @@ fn fit_once(data: &[(f64, f64, f64)], times: &[f64]) -> Result<PronySeries> {
         .iter()
         .enumerate()
         .filter(|&(i, _)| x[i + 1] > 0.0)
-        .map(|(i, &t)| (x[i + 1], t))
+        .map(|(i, &t)| (x[i + 1] * scale, t))
         .collect();
     terms.sort_by(|p, q| p.1.total_cmp(&q.1));
-    Ok(PronySeries { g_inf: x[0], terms })
+    Ok(PronySeries {
+        g_inf: x[0] * scale,
+        terms,
+    })
 }
 
 /// The Prony fit of `prony`: the default times over the window of `data`, then, with a cap of
-/// `max_terms`, the better (lower rms relative error) of two capped fits: `max_terms`
-/// log-spaced times over the same extended window, and the uncapped fit with its smallest
-/// term dropped and the rest refitted until at most `max_terms` remain.
+/// `max_terms`, the best (lowest rms relative error) of the capped fits: `1, 2, ...,
+/// max_terms` log-spaced times over the same extended window, and the uncapped fit with its
+/// smallest term dropped and the rest refitted until at most `max_terms` remain.
 pub fn fit_prony(data: &[(f64, f64, f64)], max_terms: Option<usize>) -> Result<PronySeries> {
     let (w0, w1) = data
         .iter()
@@ -288,7 +302,14 @@ pub fn fit_prony(data: &[(f64, f64, f64)], max_terms: Option<usize>) -> Result<P
         return Ok(full);
     }
     let (t0, t1) = (times[0], times[times.len() - 1]);
-    let spaced = fit_times(data, &log_times(t0, t1, cap))?;
+    // every count up to the cap, so that a larger cap never fits worse than a smaller one
+    let mut spaced = fit_times(data, &log_times(t0, t1, 1))?;
+    for k in 2..=cap {
+        let s = fit_times(data, &log_times(t0, t1, k))?;
+        if s.rms_rel_error(data) < spaced.rms_rel_error(data) {
+            spaced = s;
+        }
+    }
     let mut dropped = full;
     while dropped.terms.len() > cap {
         let k = dropped

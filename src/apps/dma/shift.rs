@@ -260,6 +260,19 @@ pub fn fit_law(kind: LawKind, temps: &[f64], log_a: &[f64], t_ref: f64) -> Resul
         LawKind::Wlf => {
             let t_min = temps.iter().copied().fold(f64::INFINITY, f64::min);
             let c2_lo = (t_ref - t_min).max(0.0) + 1e-3;
+            if !(c2_lo < 0.5 * WLF_C2_MAX) {
+                // the law diverges at t_ref - c2, which must lie below every isotherm
+                return Err(Error::NotSupported {
+                    solver: "prony --shift wlf",
+                    what: format!(
+                        "a WLF law referred to --t-ref {t_ref} °C needs c2 > {:.4e} K (its \
+                         divergence t_ref - c2 below the coldest isotherm, {t_min} °C), beyond \
+                         the c2 the fit considers (up to {WLF_C2_MAX:e} K): choose --t-ref \
+                         nearer the measured temperatures or use --shift arrhenius",
+                        t_ref - t_min
+                    ),
+                });
+            }
             let at = |lc2: f64| {
                 let c2 = lc2.exp();
                 linear(&|t: f64| -(t - t_ref) / (c2 + t - t_ref))

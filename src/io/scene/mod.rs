@@ -639,6 +639,16 @@ pub fn shifted_material(
             law.min_temperature(MAX_LOG10_SHIFT)
         )));
     }
+    if log10_a < -MAX_LOG10_SHIFT {
+        let bound = law
+            .max_temperature(MAX_LOG10_SHIFT)
+            .map_or_else(|| "none".to_string(), |t| format!("{t:.4}"));
+        return Err(scene_error(format!(
+            "{table} shift: [impact] temperature = {t} °C gives log10 a_T = {log10_a:.4e}, \
+             relaxation times below a double's range; allowed: temperature < {bound} °C for \
+             this law (log10 a_T > -{MAX_LOG10_SHIFT})"
+        )));
+    }
     let shifted = material
         .time_shifted(10f64.powf(log10_a))
         .map_err(|e| e.at(format!("{table} shift")))?;

@@ -55,23 +55,54 @@ pub enum ShiftLaw {
     },
 }
 
-/// The unvalidated serde form of [`ShiftLaw`].
+/// The unvalidated serde form of [`ShiftLaw`]: both keys optional, so that a table with
+/// neither or both gets a message that names them (not serde's count of enum elements).
 #[derive(Deserialize)]
-#[serde(rename_all = "lowercase", deny_unknown_fields)]
-enum RawShiftLaw {
-    Wlf { c1: f64, c2: f64, t_ref: f64 },
-    Arrhenius { activation_energy: f64, t_ref: f64 },
+#[serde(deny_unknown_fields)]
+struct RawShiftLaw {
+    wlf: Option<RawWlf>,
+    arrhenius: Option<RawArrhenius>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawWlf {
+    c1: f64,
+    c2: f64,
+    t_ref: f64,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawArrhenius {
+    activation_energy: f64,
+    t_ref: f64,
 }
 
 impl TryFrom<RawShiftLaw> for ShiftLaw {
     type Error = Error;
     fn try_from(raw: RawShiftLaw) -> Result<Self> {
-        match raw {
-            RawShiftLaw::Wlf { c1, c2, t_ref } => ShiftLaw::wlf(c1, c2, t_ref),
-            RawShiftLaw::Arrhenius {
-                activation_energy,
-                t_ref,
-            } => ShiftLaw::arrhenius(activation_energy, t_ref),
+        match (raw.wlf, raw.arrhenius) {
+            (Some(RawWlf { c1, c2, t_ref }), None) => ShiftLaw::wlf(c1, c2, t_ref),
+            (
+                None,
+                Some(RawArrhenius {
+                    activation_energy,
+                    t_ref,
+                }),
+            ) => ShiftLaw::arrhenius(activation_energy, t_ref),
+            (w, _) => Err(Error::Parse {
+                what: "shift table",
+                input: if w.is_some() {
+                    "wlf and arrhenius"
+                } else {
+                    "neither wlf nor arrhenius"
+                }
+                .into(),
+                expected: "exactly one of wlf = { c1, c2, t_ref } or arrhenius = { \
+                           activation_energy, t_ref }"
+                    .into(),
+            }),
         }
     }
 }
@@ -150,6 +181,27 @@ impl ShiftLaw {
                 let inv = 1.0 / rk
                     + max_log10 * GAS_CONSTANT * std::f64::consts::LN_10 / activation_energy;
                 1.0 / inv - ZERO_CELSIUS_K
+            }
+        }
+    }
+
+    /// The highest temperature (°C) at which `log10 a_T >= -min_log10` (`min_log10 > 0`), or
+    /// `None` when the law never falls that low (WLF tends to `-c1` and Arrhenius to
+    /// `-E / (R ln 10 T_ref)` at high temperature).
+    pub fn max_temperature(&self, min_log10: f64) -> Option<f64> {
+        match *self {
+            // -c1 d / (c2 + d) = -m  <=>  d = m c2 / (c1 - m)
+            ShiftLaw::Wlf { c1, c2, t_ref } => {
+                (c1 > min_log10).then(|| t_ref + min_log10 * c2 / (c1 - min_log10))
+            }
+            ShiftLaw::Arrhenius {
+                activation_energy,
+                t_ref,
+            } => {
+                let rk = t_ref + ZERO_CELSIUS_K;
+                let inv = 1.0 / rk
+                    - min_log10 * GAS_CONSTANT * std::f64::consts::LN_10 / activation_energy;
+                (inv > 0.0).then(|| 1.0 / inv - ZERO_CELSIUS_K)
             }
         }
     }
@@ -252,6 +304,35 @@ mod tests {
                 assert!(law.log10_a(t + 1e-6).unwrap() < m);
             }
         }
+    }
+
+    /// `max_temperature` inverts `log10_a` on the hot side, and is `None` where the law never
+    /// falls that low.
+    #[test]
+    fn max_temperature_is_where_the_shift_reaches_its_lower_bound() {
+        for law in [
+            ShiftLaw::wlf(400.0, 101.6, 20.0).unwrap(),
+            ShiftLaw::arrhenius(2.0e6, 20.0).unwrap(),
+        ] {
+            for m in [1.0, 30.0, 300.0] {
+                let t = law.max_temperature(m).unwrap();
+                let back = law.log10_a(t).unwrap();
+                assert!((back + m).abs() < 1e-9 * m, "{law:?} {m} {t} {back}");
+                assert!(law.log10_a(t - 1e-6).unwrap() > -m);
+            }
+        }
+        assert_eq!(
+            ShiftLaw::wlf(8.86, 101.6, 20.0)
+                .unwrap()
+                .max_temperature(8.86),
+            None
+        );
+        assert_eq!(
+            ShiftLaw::arrhenius(2.0e5, 20.0)
+                .unwrap()
+                .max_temperature(300.0),
+            None
+        );
     }
 
     #[test]
