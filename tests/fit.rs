@@ -59,6 +59,30 @@ fn round_trip_with_contact_times_covers_the_truth() {
     }
 }
 
+/// Contact times a thousand times shorter than any standard solid of these CoRs can give (a
+/// unit slip: ms written as s would be the other way): the fit answers, and says the model
+/// misses them; data the model explains carry no such warning.
+#[test]
+fn gross_misses_are_warned() {
+    let text = "v0,cor,contact_time\n1,0.5,1e-12\n2,0.45,1e-12\n3,0.42,1e-12\n4,0.4,1e-12\n\
+                5,0.39,1e-12\n";
+    let f = fit::fit(&standard(), &parse(text).unwrap(), &[None; 4]).unwrap();
+    assert!(
+        f.warnings
+            .iter()
+            .any(|w| w.contains("misses 5 measured values grossly")),
+        "{:?}",
+        f.warnings
+    );
+    let exact = study::exact_data(&config(1, true)).unwrap();
+    let f = fit::fit(&standard(), &study::noisy(&exact, 0.01, 7, 0), &[None; 4]).unwrap();
+    assert!(
+        !f.warnings.iter().any(|w| w.contains("grossly")),
+        "{:?}",
+        f.warnings
+    );
+}
+
 #[test]
 fn cor_only_leaves_g_inf_open_and_recovers_the_groups() {
     let r = study::run(&config(12, false), &|| {}).unwrap();

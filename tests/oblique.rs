@@ -250,6 +250,31 @@ fn fast_and_euler_refuse_oblique_scenes_in_one_line() {
     }
 }
 
+/// A friction coefficient so large that mdr's stick/slip iteration stalls: `auto` answers by
+/// the reference route, says why, and agrees with mdr's full-stick answer at a finite one.
+#[test]
+fn auto_falls_back_to_the_reference_where_mdr_stalls() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/oblique_elastomer.toml"
+    ))
+    .unwrap();
+    let scene = |mu: &str| Scene::parse(&text.replace("coefficient = 0.5", mu)).unwrap();
+    let huge = scene("coefficient = 1e200");
+    let opts = SolveOptions::with(SolverKind::Auto, 1e-6);
+    let o = solve_oblique(&huge.impact, &huge.oblique, &opts).unwrap();
+    assert_eq!(o.normal.solver, "reference");
+    assert_eq!(
+        o.reason,
+        Some(mdr_impact::solvers::oblique::AUTO_OBLIQUE_FALLBACK)
+    );
+    let stick = scene("coefficient = 1e30");
+    let m = solve_oblique(&stick.impact, &stick.oblique, &opts).unwrap();
+    assert_eq!(m.normal.solver, "mdr");
+    let (a, b) = (o.tangential.tangential_cor, m.tangential.tangential_cor);
+    assert!((a - b).abs() < 1e-4, "{a} {b}");
+}
+
 #[test]
 fn cli_run_json_and_curve_angle() {
     let dir = tempfile::tempdir().unwrap();

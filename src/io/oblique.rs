@@ -79,7 +79,9 @@ pub fn oblique_summary(
 ) -> String {
     let mut out = summary(impact, opts, &o.normal);
     if let Some(why) = o.reason {
-        out = out.replace("auto answered with mdr", why);
+        out = out
+            .replace("auto answered with mdr", why)
+            .replace("auto answered with reference", why);
     }
     if !reports_tangential(oblique) {
         return out;

@@ -138,8 +138,54 @@ pub fn validity(r: &FitResult) -> Option<String> {
     })
 }
 
-/// Apply the checks to `r`: conditional moduli, goodness of fit and its warning, rising CoRs,
-/// drops outside the model's validity.
+/// A fitted contact time off its measurement by more than this factor either way is a gross
+/// miss ([`gross_misses`]).
+pub const GROSS_CONTACT_TIME_FACTOR: f64 = 2.0;
+
+/// A fitted CoR off its measurement by more than this (absolute) is a gross miss.
+pub const GROSS_COR_MISS: f64 = 0.2;
+
+/// Drops the fitted model misses grossly, whatever the noise (a contact time off by more than
+/// [`GROSS_CONTACT_TIME_FACTOR`], a CoR by more than [`GROSS_COR_MISS`]): data no viscoelastic
+/// solid of the model explains, or a unit slip in a column. Without standard deviations no
+/// chi-square test can say so, and the estimated noise scale absorbs any misfit.
+pub fn gross_misses(r: &FitResult) -> Option<String> {
+    let mut worst: Option<(f64, String)> = None;
+    let mut count = 0usize;
+    for x in &r.residuals {
+        let (miss, text) = match x.quantity {
+            "contact_time" => (
+                (x.model / x.measured).ln().abs() / GROSS_CONTACT_TIME_FACTOR.ln(),
+                format!(
+                    "contact time {:.3e} s against {:.3e} s measured",
+                    x.model, x.measured
+                ),
+            ),
+            _ => (
+                (x.model - x.measured).abs() / GROSS_COR_MISS,
+                format!("CoR {:.4} against {:.4} measured", x.model, x.measured),
+            ),
+        };
+        if miss > 1.0 {
+            count += 1;
+            let v0 = r.data.observations[x.observation].v0;
+            if worst.as_ref().is_none_or(|w| miss > w.0) {
+                worst = Some((miss, format!("{text} at v0 = {v0} m/s")));
+            }
+        }
+    }
+    worst.map(|(_, text)| {
+        format!(
+            "the fitted model misses {count} measured values grossly (a contact time by more than \
+             a factor {GROSS_CONTACT_TIME_FACTOR}, a CoR by more than {GROSS_COR_MISS}; worst: \
+             {text}): no material of this model explains the data; check the units of the \
+             columns (s, m/s)"
+        )
+    })
+}
+
+/// Apply the checks to `r`: conditional moduli, goodness of fit and its warning, gross misses,
+/// rising CoRs, drops outside the model's validity.
 pub fn apply(r: &mut FitResult) {
     condition_on_nu(r);
     r.goodness = goodness(r);
@@ -150,6 +196,7 @@ pub fn apply(r: &mut FitResult) {
             g.chi2, g.dof, g.p_value
         ));
     }
+    r.warnings.extend(gross_misses(r));
     r.warnings.extend(rising_cor(&r.data));
     r.warnings.extend(validity(r));
     if let Some(nu) = r.conditional_on_nu {
