@@ -172,3 +172,48 @@ fn summaries_print_no_inf() {
         );
     }
 }
+
+/// The validity of prescribed indentations and steep shapes: `indent` warns on stderr (its
+/// stdout is the CSV), and a power law as steep as a sharp cone warns as the cone does.
+#[test]
+fn steep_shapes_and_deep_indentations_are_warned() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = run(
+        &[
+            "indent",
+            "--history",
+            "triangle",
+            "--peak-time",
+            "1",
+            "--g-inf",
+            "1e6",
+            "--g1",
+            "1e7",
+            "--eta",
+            "1e6",
+            "--nu",
+            "0.45",
+            "--rate",
+            "1e-4",
+            "--radius",
+            "1e-5",
+            "--times",
+            "0.5,1,1.5",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("warning: contact radius a_max/R = 3.162 exceeds 0.35"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(String::from_utf8_lossy(&o.stdout).starts_with("t_s,d_m,a_m,force_N\n"));
+    let steep = "[indenter]\nmass = 4.11e-3\nshape = \"power-law\"\nexponent = 1\n\
+                 coefficient = 2.0e4\n[impact]\nvelocity = 0.99\n";
+    std::fs::write(dir.path().join("p.toml"), format!("{steep}{STANDARD}")).unwrap();
+    let o = run(&["run", "p.toml"], dir.path());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(out.contains("the power law's face has the slope"), "{out}");
+}

@@ -91,6 +91,24 @@ pub fn run(
     force_curve(material, shape, &history, times, method)
 }
 
+/// The validity warnings of a force curve: those of its shape at the largest contact radius
+/// and depth of `rows` ([`crate::model::validity::shape_warnings`]; a sphere's contact measured
+/// against its radius).
+pub fn warnings(shape: &Shape, rows: &[ForceCurveRow]) -> Vec<String> {
+    let a = rows.iter().map(|r| r.a).fold(0.0, f64::max);
+    let d = rows.iter().map(|r| r.d).fold(0.0, f64::max);
+    let radius = match *shape {
+        Shape::Paraboloid { radius } => radius,
+        Shape::Spheres { caps } => caps
+            .iter()
+            .map(|c| c.radius)
+            .filter(|r| r.is_finite())
+            .fold(f64::INFINITY, f64::min),
+        _ => f64::INFINITY,
+    };
+    crate::model::validity::shape_warnings(shape, radius, a, d)
+}
+
 /// The header of [`csv()`]: time (s), depth (m), contact radius (m), force (N).
 pub const CSV_HEADER: &str = "t_s,d_m,a_m,force_N";
 

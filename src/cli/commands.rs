@@ -329,6 +329,10 @@ fn cmd_indent(a: IndentArgs) -> Outcome {
     };
     let (kind, rate, peak, times) = (a.history, a.rate, a.peak_time, a.times.as_deref());
     let rows = indent::run(&material, &shape, kind, rate, peak, times, a.solver.into())?;
+    // stdout holds the CSV alone
+    for w in indent::warnings(&shape, &rows) {
+        eprintln!("warning: {w}");
+    }
     stdout(&indent::csv(&rows))
 }
 

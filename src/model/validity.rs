@@ -42,6 +42,12 @@ pub const EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO: f64 = 0.8;
 /// cone, 70.3°, has 0.36).
 pub const CONE_MAX_SLOPE: f64 = 0.6;
 
+/// Largest indentation of a flat punch against its radius, `d_max / a_0`, before the strain
+/// under it is warned about as not small: the cone's bound on the mean contact strain
+/// `p_mean / E*` (`cot θ / 2` for a cone, `2 d / (π a_0)` for a flat punch; Johnson, *Contact
+/// Mechanics*, 1985, §5.2), `(π / 4) CONE_MAX_SLOPE = 0.471`.
+pub const FLAT_MAX_STRAIN: f64 = std::f64::consts::FRAC_PI_4 * CONE_MAX_SLOPE;
+
 /// Transit time of shear waves over the contact diameter against the contact time, above
 /// which the quasi-static assumption is warned about.
 pub const QUASI_STATIC_MAX_WAVE_RATIO: f64 = 0.01;
@@ -158,50 +164,13 @@ impl Validity {
         let r = reference_radius(impact);
         let contact_radius_ratio = outcome.max_contact_radius / r;
         let indentation_ratio = outcome.max_indentation / r;
-        let mut warnings = Vec::new();
         let x = contact_radius_ratio;
-        let exact = match impact.shape() {
-            Shape::Spheres { caps } => caps
-                .iter()
-                .filter(|c| c.radius.is_finite())
-                .all(|c| c.exact),
-            _ => false,
-        };
-        if let Shape::Cone { half_angle_deg } = *impact.shape() {
-            let slope = 1.0 / half_angle_deg.to_radians().tan();
-            if slope > CONE_MAX_SLOPE {
-                warnings.push(format!(
-                    "the cone's face has the slope 1/tan({half_angle_deg} deg) = {slope:.2} \
-                     (more than {CONE_MAX_SLOPE}): the half-space solutions assume small surface \
-                     slopes, and a sharp cone strains the material far beyond the linear range"
-                ));
-            }
-        }
-        if exact && x > EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO {
-            warnings.push(format!(
-                "contact radius a_max/R = {} exceeds {EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO}: \
-                 the exact sphere is solved on a half-space with linear strains, and a contact \
-                 this wide is neither small against the ball nor of small strain",
-                ratio_text(x)
-            ));
-        } else if !exact && x > PARABOLOID_MAX_CONTACT_RADIUS_RATIO {
-            let differs = if x < 1.0 {
-                format!(
-                    "at this contact radius an exact sphere needs {:.1} % more force and \
-                     indents {:.1} % deeper (Segedin 1957)",
-                    100.0 * sphere_force_excess(x),
-                    100.0 * sphere_indentation_excess(x)
-                )
-            } else {
-                "the contact is wider than the sphere itself".to_string()
-            };
-            warnings.push(format!(
-                "contact radius a_max/R = {} exceeds {PARABOLOID_MAX_CONTACT_RADIUS_RATIO}: \
-                 the paraboloid of Hertz no longer stands in for the sphere and strains are not \
-                 small; {differs}; these numbers are the paraboloid's",
-                ratio_text(x)
-            ));
-        }
+        let mut warnings = shape_warnings(
+            impact.shape(),
+            r,
+            outcome.max_contact_radius,
+            outcome.max_indentation,
+        );
         let wave_transit_ratio = densities
             .iter()
             .map(|(m, rho)| {
@@ -228,6 +197,96 @@ impl Validity {
             warnings,
         }
     }
+}
+
+/// The warnings of an indenter's shape at its largest contact (radius `max_contact_radius`,
+/// indentation `max_indentation`, m; `radius` the radius of curvature the contact is measured
+/// against, `inf` for shapes without one): a wide contact on a paraboloid or an exact sphere,
+/// a steep cone or power law, a deep flat punch. Shared by impacts ([`Validity`]) and
+/// prescribed indentations (`indent`).
+pub fn shape_warnings(
+    shape: &Shape,
+    radius: f64,
+    max_contact_radius: f64,
+    max_indentation: f64,
+) -> Vec<String> {
+    let mut warnings = Vec::new();
+    let x = max_contact_radius / radius;
+    let exact = match shape {
+        Shape::Spheres { caps } => caps
+            .iter()
+            .filter(|c| c.radius.is_finite())
+            .all(|c| c.exact),
+        _ => false,
+    };
+    if let Shape::Cone { half_angle_deg } = *shape {
+        let slope = 1.0 / half_angle_deg.to_radians().tan();
+        if slope > CONE_MAX_SLOPE {
+            warnings.push(format!(
+                "the cone's face has the slope 1/tan({half_angle_deg} deg) = {slope:.2} \
+                 (more than {CONE_MAX_SLOPE}): the half-space solutions assume small surface \
+                 slopes, and a sharp cone strains the material far beyond the linear range"
+            ));
+        }
+    }
+    match *shape {
+        // the slope of the face at the edge of the largest contact, `n c a^(n-1)`, under
+        // the cone's bound (a power law with n = 1 is a cone)
+        Shape::PowerLaw {
+            exponent: n,
+            coefficient: c,
+        } => {
+            let a = max_contact_radius;
+            let slope = n * c * a.powf(n - 1.0);
+            if a > 0.0 && !(slope <= CONE_MAX_SLOPE) {
+                warnings.push(format!(
+                    "the power law's face has the slope n c a_max^(n-1) = {} at the edge of \
+                     the largest contact (more than {CONE_MAX_SLOPE}): the half-space \
+                     solutions assume small surface slopes, and so steep a face strains the \
+                     material far beyond the linear range",
+                    ratio_text(slope)
+                ));
+            }
+        }
+        Shape::Flat { radius } => {
+            let strain = max_indentation / radius;
+            if !(strain <= FLAT_MAX_STRAIN) {
+                warnings.push(format!(
+                    "the flat punch indents d_max/a_0 = {} of its radius (more than \
+                     {FLAT_MAX_STRAIN:.3}, the cone's bound on the mean strain): the strain \
+                     under it is not small, and the half-space solution assumes it is",
+                    ratio_text(strain)
+                ));
+            }
+        }
+        _ => {}
+    }
+    if exact && x > EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO {
+        warnings.push(format!(
+            "contact radius a_max/R = {} exceeds {EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO}: \
+             the exact sphere is solved on a half-space with linear strains, and a contact \
+             this wide is neither small against the ball nor of small strain",
+            ratio_text(x)
+        ));
+    } else if !exact && x > PARABOLOID_MAX_CONTACT_RADIUS_RATIO {
+        let differs = if x < 1.0 {
+            format!(
+                "at this contact radius an exact sphere needs {:.1} % more force and \
+                 indents {:.1} % deeper (Segedin 1957)",
+                100.0 * sphere_force_excess(x),
+                100.0 * sphere_indentation_excess(x)
+            )
+        } else {
+            "the contact is wider than the sphere itself".to_string()
+        };
+        warnings.push(format!(
+            "contact radius a_max/R = {} exceeds {PARABOLOID_MAX_CONTACT_RADIUS_RATIO}: \
+             the paraboloid of Hertz no longer stands in for the sphere and strains are not \
+             small; {differs}; these numbers are the paraboloid's",
+            ratio_text(x)
+        ));
+    }
+    warnings
 }
 
 /// A dimensionless ratio for a message: three decimals up to 1e6, then three significant
