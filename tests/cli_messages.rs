@@ -217,3 +217,38 @@ fn steep_shapes_and_deep_indentations_are_warned() {
     let out = String::from_utf8_lossy(&o.stdout);
     assert!(out.contains("the power law's face has the slope"), "{out}");
 }
+
+/// An exact sphere far too small for its impact: the solvers' failure says why.
+#[test]
+fn an_exact_sphere_indented_past_its_radius_is_explained() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = format!(
+        "[indenter]\nmass = 4.11e-3\nshape = \"sphere\"\nradius = 1e-6\n[impact]\n\
+         velocity = 0.99\n{STANDARD}"
+    );
+    std::fs::write(dir.path().join("e.toml"), text).unwrap();
+    let o = run(&["run", "e.toml"], dir.path());
+    assert_one_line_error(&o, "an exact sphere whose contact may reach its radius");
+}
+
+/// Groups whose canonical material leaves double precision are refused naming the groups (not
+/// the canonical mass, radius and modulus of 1 that stand behind them).
+#[test]
+fn groups_beyond_double_precision_name_the_groups() {
+    let dir = tempfile::tempdir().unwrap();
+    for (p2, p3, want) in [
+        (
+            "1e200",
+            "1e200",
+            "groups: nu = 0.45, p2 = 1e200, p3 = 1e200 give a relaxation time",
+        ),
+        (
+            "1e-300",
+            "1e300",
+            "groups: p2 = 1e-300: a glassy modulus 1/p2",
+        ),
+    ] {
+        let o = run(&["cor", "--nu", "0.45", "--p2", p2, "--p3", p3], dir.path());
+        assert_one_line_error(&o, want);
+    }
+}

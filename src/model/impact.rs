@@ -125,6 +125,11 @@ pub struct Impact {
     equivalent: Prony,
 }
 
+/// Smallest `p2 = G_inf / G_1` that [`Impact::from_groups`] answers: squares of the glassy
+/// modulus `1 / p2` (canonical units) overflow beyond about `1e-280`, and `1e-250` answered
+/// (with `tau = p2 p3 = 1`).
+pub const MIN_P2: f64 = 1e-250;
+
 impl Impact {
     /// Impact of `sphere` at speed `velocity` (m/s, `0 < v0 < inf`) on a half-space of
     /// `material`. Its `G_eq(t)` must stay a valid Prony series in canonical units (finite,
@@ -309,7 +314,29 @@ impl Impact {
 
     /// The impact in canonical units `m = R = v0 = G_inf = 1` with the given groups.
     pub fn from_groups(groups: Groups) -> Result<Self> {
-        Self::new(Sphere::new(1.0, 1.0)?, 1.0, groups.canonical_material()?)
+        if groups.p2 < MIN_P2 && groups.p3 > 0.0 {
+            return Err(Error::NotSupported {
+                solver: "groups",
+                what: format!(
+                    "p2 = {:e}: a glassy modulus 1/p2 times the relaxed one overflows the \
+                     solvers' arithmetic in canonical units (answered for p2 >= {MIN_P2:e})",
+                    groups.p2
+                ),
+            });
+        }
+        Self::new(Sphere::new(1.0, 1.0)?, 1.0, groups.canonical_material()?).map_err(|e| match e {
+            // in canonical units the inputs are the groups, not a mass, a radius and moduli
+            Error::OutOfScale { what, value, .. } => Error::NotSupported {
+                solver: "groups",
+                what: format!(
+                    "nu = {}, p2 = {:e}, p3 = {:e} give {what} = {value:e} (canonical units \
+                     m = R = v0 = G_inf = 1: G_1 = 1/p2, eta = p3, tau = p2 p3), beyond the \
+                     range of double precision",
+                    groups.nu, groups.p2, groups.p3
+                ),
+            },
+            e => e,
+        })
     }
 
     /// The sphere: the indenter's mass and its nominal radius (the radius of its shape for a

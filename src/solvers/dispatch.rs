@@ -50,6 +50,16 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
             // the solvers fail where a liquid relaxes fast against the contact: the sphere
             // then comes to rest in it (e -> 0, contact time -> inf as g_inf -> 0+)
             e.at(LIQUID_PLACE)
+        } else if let Some(x) = exact_sphere_reach(impact) {
+            // the exact cap's contact radius cannot pass its radius: the solvers fail as the
+            // contact approaches it
+            e.at(format!(
+                "an exact sphere whose contact may reach its radius (the relaxed Hertz estimate \
+                 gives a_max/R = {}; the exact cap ends at a = R, and the half-space model \
+                 long before): a larger radius, a lower velocity, or the paraboloid (shape or \
+                 profile \"paraboloid\") for its formal answer",
+                crate::model::validity::ratio_text(x)
+            ))
         } else {
             e
         }
@@ -68,6 +78,31 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
 /// usually makes it fail (docs/theory.md §15).
 pub const LIQUID_PLACE: &str = "g_inf = 0, a viscoelastic liquid that may hold the sphere (the \
     CoR tends to 0 and the contact time to inf when it relaxes fast against the contact)";
+
+/// The relaxed Hertz estimate of `a_max / R` (an upper bound: the viscoelastic material is
+/// stiffer) when the impact's shape has an exact spherical cap and that estimate exceeds
+/// [`crate::model::validity::EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO`].
+fn exact_sphere_reach(impact: &Impact) -> Option<f64> {
+    use crate::model::geometry::Shape;
+    let Shape::Spheres { caps } = impact.shape() else {
+        return None;
+    };
+    let r = caps
+        .iter()
+        .filter(|c| c.exact && c.radius.is_finite())
+        .map(|c| c.radius)
+        .fold(f64::INFINITY, f64::min);
+    let h = crate::model::hertz::HertzImpact::new(
+        impact.sphere().mass(),
+        r,
+        impact.velocity(),
+        impact.relaxed_effective_modulus(),
+    )
+    .ok()?;
+    let x = h.max_contact_radius() / r;
+    (r.is_finite() && x > crate::model::validity::EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO)
+        .then_some(x)
+}
 
 /// The solver of a kind: the one place that maps the table's names to implementations.
 pub fn solver_for(kind: SolverKind) -> &'static dyn ImpactSolver {
