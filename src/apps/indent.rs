@@ -88,7 +88,14 @@ pub fn run(
             &default
         }
     };
-    force_curve(material, shape, &history, times, method)
+    // a failure deep in a solver (a tolerance or a force that under- or overflows) is placed
+    // at the flags that set the history's scale
+    force_curve(material, shape, &history, times, method).map_err(|e| {
+        e.at(format!(
+            "indent --rate {rate:e} m/s --peak-time {peak_time:e} s (depth scale {:e} m)",
+            rate * peak_time
+        ))
+    })
 }
 
 /// The validity warnings of a force curve: those of its shape at the largest contact radius
