@@ -287,17 +287,18 @@ fn cli_run_json_and_curve_angle() {
         )
     );
     std::fs::write(&scene, text).unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_mdr-impact"))
-        .args(["run", "--json"])
-        .arg(&scene)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    // the command's stdout, once it has succeeded
+    let succeeds = |args: &[&std::ffi::OsStr]| -> Vec<u8> {
+        let out = Command::new(env!("CARGO_BIN_EXE_mdr-impact"))
+            .args(args)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{err}");
+        out.stdout
+    };
+    let out = succeeds(&["run".as_ref(), "--json".as_ref(), scene.as_ref()]);
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     for key in [
         "tangential_cor",
         "tangential_cor_centre",
@@ -309,17 +310,12 @@ fn cli_run_json_and_curve_angle() {
         assert!(v[key].is_number(), "{key}: {v}");
     }
     assert_eq!(v["solver"], "mdr");
-    let out = Command::new(env!("CARGO_BIN_EXE_mdr-impact"))
-        .args(["curve", "--angle", "5:60:4", "--speed", "1.0", "--out"])
-        .arg(dir.path())
-        .arg(&scene)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    // `curve --angle SPEC --speed 1.0` of the scene into `out`
+    let angle_curve = |spec: &str, out: &std::path::Path| {
+        let head = ["curve", "--angle", spec, "--speed", "1.0", "--out"].map(std::ffi::OsStr::new);
+        succeeds(&[&head[..], &[out.as_ref(), scene.as_ref()]].concat());
+    };
+    angle_curve("5:60:4", dir.path());
     let csv = std::fs::read_to_string(dir.path().join("curve.csv")).unwrap();
     let mut lines = csv.lines();
     assert_eq!(
@@ -342,17 +338,7 @@ fn cli_run_json_and_curve_angle() {
     // from 0°, where the tangential CoRs divide by zero: empty cells (null in JSON), never NaN,
     // and the plots of the one angle left
     let zero = dir.path().join("zero");
-    let out = Command::new(env!("CARGO_BIN_EXE_mdr-impact"))
-        .args(["curve", "--angle", "0:60:2", "--speed", "1.0", "--out"])
-        .arg(&zero)
-        .arg(&scene)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    angle_curve("0:60:2", &zero);
     let csv = std::fs::read_to_string(zero.join("curve.csv")).unwrap();
     assert!(!csv.contains("NaN") && !csv.contains("inf"), "{csv}");
     let row0: Vec<&str> = csv.lines().nth(1).unwrap().split(',').collect();

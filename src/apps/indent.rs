@@ -104,16 +104,11 @@ pub fn run(
 pub fn warnings(shape: &Shape, rows: &[ForceCurveRow]) -> Vec<String> {
     let a = rows.iter().map(|r| r.a).fold(0.0, f64::max);
     let d = rows.iter().map(|r| r.d).fold(0.0, f64::max);
-    let radius = match *shape {
-        Shape::Paraboloid { radius } => radius,
-        Shape::Spheres { caps } => caps
-            .iter()
-            .map(|c| c.radius)
-            .filter(|r| r.is_finite())
-            .fold(f64::INFINITY, f64::min),
-        _ => f64::INFINITY,
+    let radius = match shape {
+        Shape::Paraboloid { .. } | Shape::Spheres { .. } => shape.tip_radius(),
+        _ => None,
     };
-    crate::model::validity::shape_warnings(shape, radius, a, d)
+    crate::model::validity::shape_warnings(shape, radius.unwrap_or(f64::INFINITY), a, d)
 }
 
 /// The header of [`csv()`]: time (s), depth (m), contact radius (m), force (N).

@@ -15,18 +15,21 @@ use mdr_impact::{solve, Error, Groups, Impact, Material, SolveOptions};
 use super::args::*;
 use super::{progress_bar, with_progress, with_spinner, Failure, Outcome};
 
-/// `println!` to stdout that returns a write error (a full disk, a closed file) as the
-/// command's error instead of panicking.
+/// `println!` through [`stdout`]: a write error (a full disk, a closed file) is the command's
+/// error instead of a panic.
 macro_rules! outln {
+    () => {
+        stdout("\n")?
+    };
     ($($t:tt)*) => {
-        writeln!(std::io::stdout(), $($t)*).map_err(|e| Failure::from(Error::io("<stdout>", e)))?
+        stdout(&(format!($($t)*) + "\n"))?
     };
 }
 
-/// `print!` to stdout, as [`outln`].
+/// `print!` through [`stdout`], as [`outln`].
 macro_rules! out {
     ($($t:tt)*) => {
-        write!(std::io::stdout(), $($t)*).map_err(|e| Failure::from(Error::io("<stdout>", e)))?
+        stdout(&format!($($t)*))?
     };
 }
 

@@ -79,29 +79,18 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
 pub const LIQUID_PLACE: &str = "g_inf = 0, a viscoelastic liquid that may hold the sphere (the \
     CoR tends to 0 and the contact time to inf when it relaxes fast against the contact)";
 
-/// The relaxed Hertz estimate of `a_max / R` (an upper bound: the viscoelastic material is
-/// stiffer) when the impact's shape has an exact spherical cap and that estimate exceeds
+/// The relaxed Hertz estimate of `a_max` (an upper bound: the viscoelastic material is stiffer)
+/// over the radius the exact cap's contact cannot reach ([`Shape::cap_limit`]), when it exceeds
 /// [`crate::model::validity::EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO`].
+///
+/// [`Shape::cap_limit`]: crate::model::geometry::Shape::cap_limit
 fn exact_sphere_reach(impact: &Impact) -> Option<f64> {
-    use crate::model::geometry::Shape;
-    let Shape::Spheres { caps } = impact.shape() else {
-        return None;
-    };
-    let r = caps
-        .iter()
-        .filter(|c| c.exact && c.radius.is_finite())
-        .map(|c| c.radius)
-        .fold(f64::INFINITY, f64::min);
-    let h = crate::model::hertz::HertzImpact::new(
-        impact.sphere().mass(),
-        r,
-        impact.velocity(),
-        impact.relaxed_effective_modulus(),
-    )
-    .ok()?;
-    let x = h.max_contact_radius() / r;
-    (r.is_finite() && x > crate::model::validity::EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO)
-        .then_some(x)
+    let r = impact.shape().cap_limit()?;
+    let x = crate::model::hertz::HertzImpact::relaxed(impact)
+        .ok()?
+        .max_contact_radius()
+        / r;
+    (x > crate::model::validity::EXACT_SPHERE_MAX_CONTACT_RADIUS_RATIO).then_some(x)
 }
 
 /// The solver of a kind: the one place that maps the table's names to implementations.

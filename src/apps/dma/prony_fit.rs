@@ -303,13 +303,9 @@ pub fn fit_prony(data: &[(f64, f64, f64)], max_terms: Option<usize>) -> Result<P
     }
     let (t0, t1) = (times[0], times[times.len() - 1]);
     // every count up to the cap, so that a larger cap never fits worse than a smaller one
-    let mut spaced = fit_times(data, &log_times(t0, t1, 1))?;
-    for k in 2..=cap {
-        let s = fit_times(data, &log_times(t0, t1, k))?;
-        if s.rms_rel_error(data) < spaced.rms_rel_error(data) {
-            spaced = s;
-        }
-    }
+    let mut candidates = (1..=cap)
+        .map(|k| fit_times(data, &log_times(t0, t1, k)))
+        .collect::<Result<Vec<_>>>()?;
     let mut dropped = full;
     while dropped.terms.len() > cap {
         let k = dropped
@@ -323,13 +319,13 @@ pub fn fit_prony(data: &[(f64, f64, f64)], max_terms: Option<usize>) -> Result<P
         ts.remove(k);
         dropped = fit_times(data, &ts)?;
     }
-    Ok(
-        if spaced.rms_rel_error(data) <= dropped.rms_rel_error(data) {
-            spaced
-        } else {
-            dropped
-        },
-    )
+    candidates.push(dropped);
+    // the first of the lowest rms (fewer log-spaced times, then those, before the dropped fit)
+    let rms: Vec<f64> = candidates.iter().map(|c| c.rms_rel_error(data)).collect();
+    let best = (0..rms.len())
+        .min_by(|&i, &j| rms[i].total_cmp(&rms[j]))
+        .unwrap_or(0);
+    Ok(candidates.swap_remove(best))
 }
 
 #[cfg(test)]

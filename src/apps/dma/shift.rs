@@ -260,7 +260,7 @@ pub fn fit_law(kind: LawKind, temps: &[f64], log_a: &[f64], t_ref: f64) -> Resul
         LawKind::Wlf => {
             let t_min = temps.iter().copied().fold(f64::INFINITY, f64::min);
             let c2_lo = (t_ref - t_min).max(0.0) + 1e-3;
-            if !(c2_lo < 0.5 * WLF_C2_MAX) {
+            if !(c2_lo < WLF_C2_MAX) {
                 // the law diverges at t_ref - c2, which must lie below every isotherm
                 return Err(Error::NotSupported {
                     solver: "prony --shift wlf",
