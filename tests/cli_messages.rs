@@ -67,6 +67,50 @@ fn fix_out_of_range_names_the_parameter() {
     }
 }
 
+/// A fixed value outside the box every fit stays in is refused at once, naming the value and
+/// the box's rule it breaks (`--fix g_inf=1e-300` spent a minute on solves that could not
+/// succeed, `--fix g_inf=1e300` said "0 tried").
+#[test]
+fn fix_outside_the_fit_box_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("d.csv"), "v0,cor\n0.5,0.5\n1,0.45\n2,0.4\n").unwrap();
+    let rule = "leaves no material in the box the fit searches";
+    for (fix, needle) in [
+        (&["g_inf=1e-300"][..], "--fix g_inf = 1e-300 Pa leaves"),
+        (&["g_inf=1e300"], "--fix g_inf = 1e300 Pa leaves"),
+        (&["g_1=1e-300"], "g_inf/g_1 from 1e-7 to 1e4"),
+        (&["eta=1e300"], "p3 from 1e-4 to 1e5 at these drops"),
+        (
+            &["g_inf=1e6", "g_1=1e20"],
+            "--fix g_inf = 1e6 Pa with g_1 = 1e20 Pa leaves",
+        ),
+    ] {
+        let mut args = vec!["fit", "d.csv", "--out", "res"];
+        for f in fix {
+            args.extend(["--fix", f]);
+        }
+        let o = run(&args, dir.path());
+        assert_one_line_error(&o, rule);
+        assert!(stderr(&o).contains(needle), "{}", stderr(&o));
+        assert!(!dir.path().join("res").exists());
+    }
+    // the box's own edge is inside it
+    let o = run(
+        &[
+            "fit",
+            "d.csv",
+            "--fix",
+            "g_inf=1e13",
+            "--fix",
+            "g_1=1e20",
+            "--out",
+            "res",
+        ],
+        dir.path(),
+    );
+    assert!(!stderr(&o).contains(rule), "{}", stderr(&o));
+}
+
 /// An empty relaxing bulk says what to write instead, without a Rust type name.
 #[test]
 fn empty_bulk_terms_get_a_plain_message() {

@@ -148,6 +148,26 @@ fn refusals_name_the_field() {
     assert!(e.contains("g_inf") && !e.contains('\n'), "{e}");
 }
 
+/// A solid whose relaxed modulus could not hold the sphere fails as a liquid does, and says so
+/// (`g_inf = 1e-300` Pa beside `G_1 = 1e7` Pa gave only "Newton update is not finite (NaN)"):
+/// the relaxed Hertz estimate `a_max/R` is named; a solid that holds it keeps the plain error.
+#[test]
+fn a_nearly_liquid_solid_that_fails_says_why() {
+    for g_inf in [1e-300, 1e-100, 1e-20] {
+        let e = solve(&maxwell(g_inf, 500.0, 0.99), &opts(SolverKind::Auto, 1e-6))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with("a nearly liquid material: on its relaxed modulus alone the sphere would sink to a_max/R = "),
+            "g_inf {g_inf}: {e}"
+        );
+        assert!(!e.contains('\n'), "{e}");
+    }
+    // still answered where a solver succeeds (g_inf = 1e-5 Pa: e near 0)
+    let o = solve(&maxwell(1e-5, 500.0, 0.99), &opts(SolverKind::Auto, 1e-6)).unwrap();
+    assert!(o.cor >= 0.0 && o.cor < 1e-3, "{}", o.cor);
+}
+
 const LIQUID_SCENE: &str = "[sphere]\nmass = 4.11e-3\nradius = 5.0e-3\n\n[impact]\n\
     velocity = 0.99\n\n[material]\ng_inf = 0.0\ng_1 = 1.0e7\neta = 5000.0\npoisson = 0.5\n";
 

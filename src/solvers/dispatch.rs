@@ -50,6 +50,15 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
             // the solvers fail where a liquid relaxes fast against the contact: the sphere
             // then comes to rest in it (e -> 0, contact time -> inf as g_inf -> 0+)
             e.at(LIQUID_PLACE)
+        } else if let Some(x) = relaxed_sinks(impact) {
+            // a solid whose relaxed modulus could not hold the sphere fails like a liquid
+            e.at(format!(
+                "a nearly liquid material: on its relaxed modulus alone the sphere would sink \
+                 to a_max/R = {} (the relaxed Hertz estimate), so it may hold the sphere when \
+                 it relaxes fast against the contact (the CoR tends to 0 and the contact time \
+                 to inf as g_inf -> 0+)",
+                crate::model::validity::ratio_text(x)
+            ))
         } else if let Some(x) = exact_sphere_reach(impact) {
             // the exact cap's contact radius cannot pass its radius: the solvers fail as the
             // contact approaches it
@@ -78,6 +87,21 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
 /// usually makes it fail (docs/theory.md §15).
 pub const LIQUID_PLACE: &str = "g_inf = 0, a viscoelastic liquid that may hold the sphere (the \
     CoR tends to 0 and the contact time to inf when it relaxes fast against the contact)";
+
+/// The relaxed Hertz estimate of `a_max / R` of an impactor with a radius, when it exceeds 1:
+/// a material whose relaxed modulus alone cannot hold the sphere within the half-space model
+/// (`g_inf` far below the glassy modulus; the solvers fail on it as on a liquid, `g_inf = 0`).
+fn relaxed_sinks(impact: &Impact) -> Option<f64> {
+    let r = impact
+        .shape()
+        .tip_radius()
+        .unwrap_or(impact.sphere().radius());
+    let x = crate::model::hertz::HertzImpact::relaxed(impact)
+        .ok()?
+        .max_contact_radius()
+        / r;
+    (r.is_finite() && x > 1.0).then_some(x)
+}
 
 /// The relaxed Hertz estimate of `a_max` (an upper bound: the viscoelastic material is stiffer)
 /// over the radius the exact cap's contact cannot reach ([`Shape::cap_limit`]), when it exceeds

@@ -473,6 +473,7 @@ pub fn fit(model: &Model, data: &Data, fixed: &[Option<f64>]) -> Result<FitResul
             model.check_value(i, *v)?;
         }
     }
+    model.check_fixed_in_box(fixed, p3_scale(data))?;
     data.check_noise()?;
     if data.observations.iter().all(|o| o.cor == 1.0) {
         return Err(Error::ElasticData {

@@ -260,6 +260,81 @@ impl Model {
         }
     }
 
+    /// Whether the fixed values (aligned with [`Model::params`]) leave room in the box of
+    /// [`Model::clamp`]: every fit stays in it and holds its fixed values, so a fixed value
+    /// outside it would meet free values clamped to a box of other materials (a fixed
+    /// `g_inf = 1e-300` Pa put `g_1` at 1e4 Pa or more, `p2` near 1e-304, and the fit spent a
+    /// minute on solves that could not succeed). The `g_inf` the fixed values allow: the box
+    /// [`BOX_G_INF`], a fixed `g_inf` itself, `g_i BOX_P2` for a fixed modulus `g_i`, and
+    /// `(eta p3_scale / BOX_P3)^(5/3)` for a fixed `eta`. An empty intersection is refused,
+    /// naming the first fixed value that excludes the box or the pair that exclude each other.
+    pub fn check_fixed_in_box(&self, fixed: &[Option<f64>], p3_scale: f64) -> Result<()> {
+        use Parameter::*;
+        let fixed_of = |p: Parameter| self.slot(p).and_then(|i| fixed.get(i).copied().flatten());
+        // (what fixed it, its g_inf interval)
+        // (the fixed value, the box's rule on it, the g_inf it allows)
+        let mut limits: Vec<(String, String, (f64, f64))> = Vec::new();
+        if let Some(g) = fixed_of(GInf) {
+            limits.push((format!("g_inf = {g:e} Pa"), String::new(), (g, g)));
+        }
+        for p in self.moduli() {
+            if let (Some(g), Some(i)) = (fixed_of(p), self.slot(p)) {
+                let name = &self.params[i].name;
+                let rule = format!("g_inf/{name} from {:e} to {:e}", BOX_P2.0, BOX_P2.1);
+                limits.push((
+                    format!("{name} = {g:e} Pa"),
+                    rule,
+                    (g * BOX_P2.0, g * BOX_P2.1),
+                ));
+            }
+        }
+        if let (ModelKind::StandardSolid, Some(eta)) = (&self.kind, fixed_of(Eta)) {
+            let g = |p3: f64| (eta * p3_scale / p3).powf(1.0 / ETA_GROUP_EXPONENT);
+            let rule = format!("p3 from {:e} to {:e} at these drops", BOX_P3.0, BOX_P3.1);
+            limits.push((
+                format!("eta = {eta:e} Pa s"),
+                rule,
+                (g(BOX_P3.1), g(BOX_P3.0)),
+            ));
+        }
+        let outside = |which: &[&(String, String, (f64, f64))]| {
+            let values: Vec<&str> = which.iter().map(|l| l.0.as_str()).collect();
+            let mut rules = vec![format!(
+                "g_inf from {:e} to {:e} Pa",
+                BOX_G_INF.0, BOX_G_INF.1
+            )];
+            rules.extend(
+                which
+                    .iter()
+                    .filter(|l| !l.1.is_empty())
+                    .map(|l| l.1.clone()),
+            );
+            Error::NotSupported {
+                solver: "fit",
+                what: format!(
+                    "--fix {} leaves no material in the box the fit searches ({}): fix values \
+                     inside it, or solve such a material with `run`",
+                    values.join(" with "),
+                    rules.join(", ")
+                ),
+            }
+        };
+        // ends compared with a relative slack: a value on the box's edge is in it
+        let meets = |(lo, hi): (f64, f64), (l, h): (f64, f64)| {
+            lo <= h * (1.0 + 1e-12) && l <= hi * (1.0 + 1e-12)
+        };
+        if let Some(l) = limits.iter().find(|l| !meets(l.2, BOX_G_INF)) {
+            return Err(outside(&[l]));
+        }
+        let joint = limits
+            .iter()
+            .fold(BOX_G_INF, |(lo, hi), l| (lo.max(l.2 .0), hi.min(l.2 .1)));
+        if !meets(joint, joint) {
+            return Err(outside(&limits.iter().collect::<Vec<_>>()));
+        }
+        Ok(())
+    }
+
     /// `values` clamped into the box ([`BOX_G_INF`], [`BOX_P2`], [`BOX_P3`] with
     /// `p3 = p3_scale eta / g_inf^(3/5)`, [`BOX_NU`]).
     pub fn clamp(&self, values: &[f64], p3_scale: f64) -> Vec<f64> {
