@@ -124,6 +124,11 @@ fn the_material_of_prony_runs_at_a_temperature() {
     assert!(o.status.success(), "{}", common::stderr(&o));
     let material = std::fs::read_to_string(dir.path().join("dma/material.toml")).unwrap();
     assert!(material.contains("[material.shift]"), "{material}");
+    // the isotherms' range (scenes/dma_example.csv: -20 to 80 °C)
+    assert!(
+        material.contains("\ncalibrated = [-20.0, 80.0]"),
+        "{material}"
+    );
     let mut cors = Vec::new();
     for t in [0.0, 25.0, 60.0] {
         let text = format!(
@@ -200,5 +205,85 @@ fn curve_over_temperature() {
         let o = run(&["curve", "s.toml", "--temperature", bad], dir.path());
         assert_eq!(o.status.code(), Some(1), "{bad}");
         assert!(common::stderr(&o).contains("--temperature"), "{bad}");
+    }
+}
+
+/// A temperature outside the range a shift law was calibrated on (`calibrated`, which `prony`
+/// writes from its isotherms) is answered with a warning, in `run`'s text and JSON and once in
+/// `curve --temperature`; inside it, or without a range, none. A bad range is refused naming
+/// `calibrated`.
+#[test]
+fn temperatures_outside_the_calibrated_range_are_warned() {
+    let dir = tempfile::tempdir().unwrap();
+    let with_range = |t: f64| scene(TAUS, Some(t), true) + "calibrated = [-20.0, 80.0]\n";
+    let needle = "[material] shift: temperature 100 °C lies outside the -20 to 80 °C the WLF \
+                  shift law was calibrated on";
+    std::fs::write(dir.path().join("s.toml"), with_range(100.0)).unwrap();
+    let o = run(&["run", "s.toml"], dir.path());
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains(&format!("warning                     {needle}")),
+        "{text}"
+    );
+    let o = run(&["run", "s.toml", "--json"], dir.path());
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(
+        j["warnings"][0].as_str().unwrap().starts_with(needle),
+        "{j}"
+    );
+    // the answer is the same as without the range
+    assert_eq!(
+        j["cor"].as_f64().unwrap().to_bits(),
+        cor(&scene(TAUS, Some(100.0), true)).to_bits()
+    );
+    for inside in [
+        with_range(-20.0),
+        with_range(80.0),
+        scene(TAUS, Some(100.0), true),
+    ] {
+        std::fs::write(dir.path().join("s.toml"), inside).unwrap();
+        let o = run(&["run", "s.toml", "--json"], dir.path());
+        let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert!(!j["warnings"].to_string().contains("calibrated"), "{j}");
+    }
+    // at t_ref (no temperature given): 25 °C is inside
+    assert!(
+        Scene::parse(&(scene(TAUS, None, true) + "calibrated = [-20.0, 80.0]\n"))
+            .unwrap()
+            .warnings
+            .is_empty()
+    );
+    std::fs::write(dir.path().join("s.toml"), with_range(0.0)).unwrap();
+    let o = run(
+        &["curve", "s.toml", "--temperature", "-40:100:8"],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let err = common::stderr(&o);
+    assert!(
+        err.contains(
+            "warning: 2 of 8 temperatures (the lowest -40 °C, the highest 100 °C) lie outside"
+        ),
+        "{err}"
+    );
+    let o = run(
+        &["curve", "s.toml", "--temperature", "-20:80:6"],
+        dir.path(),
+    );
+    assert!(
+        !common::stderr(&o).contains("warning"),
+        "{}",
+        common::stderr(&o)
+    );
+    for (range, field) in [
+        ("[80.0, -20.0]", "calibrated[0]"),
+        ("[-200.0, 80.0]", "calibrated[0]"),
+        ("[-20.0, inf]", "calibrated[1]"),
+        ("[-20.0]", "calibrated: number of temperatures"),
+    ] {
+        let text = scene(TAUS, Some(0.0), true) + &format!("calibrated = {range}\n");
+        let e = Scene::parse(&text).unwrap_err().to_string();
+        assert!(e.contains(field) && !e.contains('\n'), "{range}: {e}");
     }
 }

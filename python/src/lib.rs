@@ -23,10 +23,10 @@ use pyo3::types::{PyDict, PyTuple};
 
 use mdr_impact::error::escape_text;
 use mdr_impact::io::scene::Scene as RsScene;
-use mdr_impact::io::scene::{shifted_material, temperature_without_shift};
+use mdr_impact::io::scene::{shift_warning, shifted_material, temperature_without_shift};
 use mdr_impact::model::bodies::Side;
 use mdr_impact::model::geometry::{Cap, Shape, ShapeKeys};
-use mdr_impact::model::material::shift::ShiftLaw;
+use mdr_impact::model::material::shift::{ShiftLaw, ShiftTable};
 use mdr_impact::model::material::{BulkInput, BulkProny, BulkRheology, ShearProny};
 use mdr_impact::{
     apps::batch, apps::curve, apps::dem, io::output, model::tolerances, report::catalogue,

@@ -100,7 +100,7 @@ pub(crate) struct Material {
     /// The standard solid's view of `inner` (built by a standard-solid constructor).
     solid: StandardSolid,
     /// The time–temperature shift law (`[material.shift]`), applied by a `Scene`.
-    shift: Option<ShiftLaw>,
+    shift: Option<ShiftTable>,
 }
 
 impl Material {
@@ -141,13 +141,13 @@ impl Material {
         let mut m = Self::of(inner).ok_or_else(|| {
             usage("internal: a standard solid without the standard solid's shape".into())
         })?;
-        m.shift = shift.map(|s| s.law);
+        m.shift = shift.map(|s| s.table);
         Ok(m)
     }
     /// The time–temperature shift law (a `Shift`), or `None`.
     #[getter]
     fn shift(&self) -> Option<Shift> {
-        self.shift.map(|law| Shift { law })
+        self.shift.map(|table| Shift { table })
     }
     /// Relaxed shear modulus `G_inf` (Pa).
     #[getter]
@@ -228,7 +228,7 @@ impl Material {
 pub(crate) struct GeneralMaterial {
     inner: RsMaterial,
     /// The time–temperature shift law (`[material.shift]`), applied by a `Scene`.
-    shift: Option<ShiftLaw>,
+    shift: Option<ShiftTable>,
 }
 
 #[pymethods]
@@ -266,13 +266,13 @@ impl GeneralMaterial {
         };
         Ok(Self {
             inner: ok(RsMaterial::general(s, rheology))?,
-            shift: shift.map(|s| s.law),
+            shift: shift.map(|s| s.table),
         })
     }
     /// The time–temperature shift law (a `Shift`), or `None`.
     #[getter]
     fn shift(&self) -> Option<Shift> {
-        self.shift.map(|law| Shift { law })
+        self.shift.map(|table| Shift { table })
     }
     /// The shear series `G(t)` as validated (terms sorted by time, equal times merged, zero
     /// moduli dropped).
@@ -327,7 +327,7 @@ impl GeneralMaterial {
 }
 
 /// The shift law of a Python material object (`Material`, `GeneralMaterial`), if any.
-pub(crate) fn material_shift(m: &Bound<'_, PyAny>) -> Option<ShiftLaw> {
+pub(crate) fn material_shift(m: &Bound<'_, PyAny>) -> Option<ShiftTable> {
     if let Ok(m) = m.cast::<Material>() {
         return m.get().shift;
     }
@@ -337,54 +337,74 @@ pub(crate) fn material_shift(m: &Bound<'_, PyAny>) -> Option<ShiftLaw> {
 /// A time–temperature shift law of a thermorheologically simple material (docs/theory.md §13,
 /// a scene's `[material.shift]`): `Shift.wlf(c1, c2, t_ref)` (`c1` dimensionless, `c2` in K,
 /// `t_ref` in °C) or `Shift.arrhenius(activation_energy, t_ref)` (J/mol, °C). At temperature
-/// `T` every relaxation time of shear and bulk is multiplied by `a_T`.
+/// `T` every relaxation time of shear and bulk is multiplied by `a_T`. `calibrated=(t_min,
+/// t_max)` (°C), the temperatures the law was fitted on (`calibrated` in a scene): a `Scene` at a
+/// temperature outside them warns that the law is extrapolated there.
 #[pyclass(frozen, eq, module = "mdr_impact")]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Shift {
-    pub(crate) law: ShiftLaw,
+    pub(crate) table: ShiftTable,
 }
 
 #[pymethods]
 impl Shift {
     /// WLF: `log10 a_T = -c1 (T - t_ref) / (c2 + T - t_ref)`, valid above `t_ref - c2`.
     #[staticmethod]
-    fn wlf(c1: f64, c2: f64, t_ref: f64) -> PyResult<Self> {
+    #[pyo3(signature = (c1, c2, t_ref, *, calibrated = None))]
+    fn wlf(c1: f64, c2: f64, t_ref: f64, calibrated: Option<(f64, f64)>) -> PyResult<Self> {
+        let law = ok(ShiftLaw::wlf(c1, c2, t_ref))?;
         Ok(Self {
-            law: ok(ShiftLaw::wlf(c1, c2, t_ref))?,
+            table: ok(ShiftTable::new(law, calibrated))?,
         })
     }
     /// Arrhenius: `log10 a_T = E_a / (R ln 10) (1/T_K - 1/T_ref,K)`.
     #[staticmethod]
-    fn arrhenius(activation_energy: f64, t_ref: f64) -> PyResult<Self> {
+    #[pyo3(signature = (activation_energy, t_ref, *, calibrated = None))]
+    fn arrhenius(
+        activation_energy: f64,
+        t_ref: f64,
+        calibrated: Option<(f64, f64)>,
+    ) -> PyResult<Self> {
+        let law = ok(ShiftLaw::arrhenius(activation_energy, t_ref))?;
         Ok(Self {
-            law: ok(ShiftLaw::arrhenius(activation_energy, t_ref))?,
+            table: ok(ShiftTable::new(law, calibrated))?,
         })
+    }
+    /// The temperatures `(t_min, t_max)` (°C) the law was calibrated on, or `None`.
+    #[getter]
+    fn calibrated(&self) -> Option<(f64, f64)> {
+        self.table.calibrated
     }
     /// `"wlf"` or `"arrhenius"`.
     #[getter]
     fn kind(&self) -> &'static str {
-        self.law.kind()
+        self.table.law.kind()
     }
     /// Reference temperature (°C).
     #[getter]
     fn t_ref(&self) -> f64 {
-        self.law.t_ref()
+        self.table.law.t_ref()
     }
     /// `log10 a_T` at `temperature` (°C); an error at or below a WLF law's singularity.
     fn log10_a(&self, temperature: f64) -> PyResult<f64> {
-        ok(self.law.log10_a(temperature))
+        ok(self.table.law.log10_a(temperature))
     }
     fn __repr__(&self) -> String {
-        match self.law {
+        let calibrated = match self.table.calibrated {
+            Some((lo, hi)) => format!(", calibrated=({lo:?}, {hi:?})"),
+            None => String::new(),
+        };
+        match self.table.law {
             ShiftLaw::Wlf { c1, c2, t_ref } => {
-                format!("Shift.wlf(c1={c1:?}, c2={c2:?}, t_ref={t_ref:?})")
+                format!("Shift.wlf(c1={c1:?}, c2={c2:?}, t_ref={t_ref:?}{calibrated})")
             }
             ShiftLaw::Arrhenius {
                 activation_energy,
                 t_ref,
-            } => {
-                format!("Shift.arrhenius(activation_energy={activation_energy:?}, t_ref={t_ref:?})")
-            }
+            } => format!(
+                "Shift.arrhenius(activation_energy={activation_energy:?}, \
+                 t_ref={t_ref:?}{calibrated})"
+            ),
         }
     }
 }

@@ -135,7 +135,7 @@ pub(crate) struct Body {
     /// `profile="sphere"`: the exact cap.
     exact: bool,
     /// The material's shift law, applied by a `Scene` at its temperature.
-    shift: Option<ShiftLaw>,
+    shift: Option<ShiftTable>,
 }
 
 /// `e` without the body it is placed at (`Error::In`): a body is named only once it is placed in
@@ -156,6 +156,7 @@ impl Body {
         side: Side,
         temperature: Option<f64>,
         shifts: &mut Vec<(String, f64)>,
+        warnings: &mut Vec<String>,
     ) -> PyResult<RsBody> {
         let b = &self.inner;
         let table = match side {
@@ -163,9 +164,10 @@ impl Body {
             Side::B => "[[body]] B [body.material]",
         };
         let material = match (b.material(), &self.shift) {
-            (BodyMaterial::Viscoelastic(m), Some(law)) => {
-                let (m, log10_a) = ok(shifted_material(m, law, temperature, table))?;
+            (BodyMaterial::Viscoelastic(m), Some(shift)) => {
+                let (m, log10_a) = ok(shifted_material(m, &shift.law, temperature, table))?;
                 shifts.push((table.to_string(), log10_a));
+                warnings.extend(shift_warning(shift, temperature, table));
                 BodyMaterial::Viscoelastic(m)
             }
             (m, _) => m.clone(),
@@ -296,11 +298,14 @@ impl Scene {
         temperature: Option<f64>,
     ) -> PyResult<Self> {
         let mut shifts: Vec<(String, f64)> = Vec::new();
+        let mut warnings: Vec<String> = Vec::new();
         let mut half_space = |m: &Bound<'_, PyAny>| match body_material(m)? {
             BodyMaterial::Viscoelastic(v) => match material_shift(m) {
-                Some(law) => {
-                    let (v, log10_a) = ok(shifted_material(&v, &law, temperature, "[material]"))?;
-                    shifts.push(("[material]".to_string(), log10_a));
+                Some(shift) => {
+                    let table = "[material]";
+                    let (v, log10_a) = ok(shifted_material(&v, &shift.law, temperature, table))?;
+                    shifts.push((table.to_string(), log10_a));
+                    warnings.extend(shift_warning(&shift, temperature, table));
                     Ok(v)
                 }
                 None => Ok(v),
@@ -330,8 +335,8 @@ impl Scene {
             }
             (None, None, None, Some((a, b))) => {
                 let pair = ok(TwoBodies::new(
-                    a.as_side(Side::A, temperature, &mut shifts)?,
-                    b.as_side(Side::B, temperature, &mut shifts)?,
+                    a.as_side(Side::A, temperature, &mut shifts, &mut warnings)?,
+                    b.as_side(Side::B, temperature, &mut shifts, &mut warnings)?,
                 ))?;
                 let impact = ok(Impact::with_bodies(pair, velocity))?;
                 if a.exact || b.exact {
@@ -378,6 +383,7 @@ impl Scene {
                 plot,
                 temperature,
                 shifts,
+                warnings,
                 oblique: Default::default(),
             },
         })
@@ -487,6 +493,7 @@ impl Scene {
             None => output::fallback(&opts, &outcome),
         };
         let mut warnings = mdr_impact::model::plausibility::warnings(impact);
+        warnings.extend(self.inner.warnings.iter().cloned());
         let mut r = ImpactResult::new(outcome, bodies, validity);
         r.fallback = fallback;
         warnings.append(&mut r.warnings);

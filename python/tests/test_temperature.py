@@ -127,3 +127,24 @@ def test_a_liquid_runs_as_on_the_command_line(tmp_path, cli):
         mi.Material(0.0, 1.0e7, 5000.0, poisson=0.3)
     with pytest.raises(mi.Error, match="g_inf"):
         mi.GeneralMaterial(mi.Prony(0.0, []), incompressible=True)
+
+
+def test_a_temperature_outside_the_calibrated_range_is_warned(tmp_path, cli):
+    """``calibrated=`` as the scene file's ``calibrated``: outside it the answer carries the same
+    warning as ``run --json``; inside it none."""
+    law = mi.Shift.wlf(8.86, 101.6, 25.0, calibrated=(-20.0, 80.0))
+    assert law.calibrated == (-20.0, 80.0)
+    assert "calibrated=(-20.0, 80.0)" in repr(law)
+    sphere = mi.Sphere(4.11e-3, 5.0e-3)
+    line = "wlf = { c1 = 8.86, c2 = 101.6, t_ref = 25.0 }\ncalibrated = [-20.0, 80.0]"
+    for t, warned in [(100.0, True), (0.0, False)]:
+        r = mi.Scene(sphere=sphere, material=_material(law), velocity=1.0, temperature=t).run(
+            history=False
+        )
+        path = tmp_path / "scene.toml"
+        path.write_text(_toml(line, t))
+        out = json.loads(cli("run", str(path), "--json").stdout)
+        assert r.warnings == out["warnings"] and r.cor == out["cor"]
+        assert any("calibrated on" in w for w in r.warnings) == warned
+    with pytest.raises(mi.Error, match="calibrated"):
+        mi.Shift.arrhenius(2.0e5, 25.0, calibrated=(80.0, -20.0))

@@ -80,16 +80,18 @@ pub struct TemperatureRow {
 /// Solve the scene of `text` (Prony files relative to `base`) at each of `temperatures` (°C)
 /// with its own velocity and solver (histories off), in parallel, rows in input order;
 /// `progress` is called once per temperature. The scene needs a `[material.shift]` law; an
-/// error names the temperature.
+/// error names the temperature. Also returns the warnings of the scene at those temperatures
+/// ([`Scene::warnings`]: temperatures outside the range a shift law was calibrated on), one
+/// sentence per kind, naming how many temperatures it concerns.
 pub fn run(
     text: &str,
     base: &Path,
     temperatures: &[f64],
     progress: &(dyn Fn() + Sync),
-) -> Result<Vec<TemperatureRow>> {
+) -> Result<(Vec<TemperatureRow>, Vec<String>)> {
     // the scene as written first: its own errors are reported as they are
     Scene::parse_in(text, base)?;
-    temperatures
+    let solved: Vec<(TemperatureRow, Vec<String>)> = temperatures
         .par_iter()
         .map(|&t| {
             let row = Scene::parse_at(text, base, Some(t)).and_then(|scene| {
@@ -98,18 +100,33 @@ pub fn run(
                     ..scene.options
                 };
                 let o = solve(&scene.impact, &opts)?;
-                Ok(TemperatureRow {
+                let row = TemperatureRow {
                     temperature: t,
                     cor: o.cor,
                     contact_time: o.contact_time,
                     max_force: o.max_force,
                     max_compression: o.max_indentation,
-                })
+                };
+                Ok((row, scene.warnings))
             });
             progress();
             row.at(|| format!("--temperature: at {t} °C"))
         })
-        .collect()
+        .collect::<Result<_>>()?;
+    let outside: Vec<(f64, &String)> = solved
+        .iter()
+        .filter_map(|(r, w)| w.first().map(|w| (r.temperature, w)))
+        .collect();
+    let warnings = match (outside.first(), outside.last()) {
+        (Some((lo, first)), Some((hi, _))) => vec![format!(
+            "{} of {} temperatures (the lowest {lo} °C, the highest {hi} °C) lie outside a \
+             shift law's calibrated range; the first: {first}",
+            outside.len(),
+            solved.len()
+        )],
+        _ => Vec::new(),
+    };
+    Ok((solved.into_iter().map(|(r, _)| r).collect(), warnings))
 }
 
 /// The CSV text of the rows: header [`CSV_HEADER`], full-precision SI numbers.

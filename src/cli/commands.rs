@@ -100,7 +100,7 @@ fn cmd_run(RunArgs { scene, json, out }: RunArgs) -> Outcome {
     if json {
         outln!(
             "{}",
-            oblique_out::oblique_json(&scene.impact, opts, ob, &oo)
+            oblique_out::oblique_json(&scene.impact, opts, ob, &oo, &scene.warnings)
         );
     } else {
         for (table, log10_a) in &scene.shifts {
@@ -119,6 +119,9 @@ fn cmd_run(RunArgs { scene, json, out }: RunArgs) -> Outcome {
             "{}",
             oblique_out::oblique_summary(&scene.impact, opts, ob, &oo)
         );
+        for w in &scene.warnings {
+            outln!("{:<28}{w}", "warning");
+        }
     }
     // with --json, stdout holds the JSON object alone; notes go to stderr
     for (what, path) in files.described() {
@@ -213,12 +216,15 @@ fn cmd_curve_temperature(scene: Option<&Path>, spec: &str, out: &Path) -> Outcom
             "default scene".into(),
         ),
     };
-    let rows = with_progress(range.n as u64, "curve", |tick| {
+    let (rows, warnings) = with_progress(range.n as u64, "curve", |tick| {
         ct::run(&text, &base, &range.values(), tick)
     })?;
     let title = format!("Coefficient of restitution against temperature: {name}");
     let written = ct::write_outputs(out, &rows, &title)?;
     out!("{}", ct::summary(&rows, Some(&written)));
+    for w in &warnings {
+        eprintln!("warning: {w}");
+    }
     Ok(())
 }
 

@@ -28,15 +28,20 @@ fn finite(x: f64) -> serde_json::Value {
 
 /// The JSON object of `run --json` for an oblique scene: [`crate::io::output::impact_json`]'s
 /// keys with the tangential ones of the module docs (and `solver_reason` saying why `auto`
-/// chose `mdr`).
+/// chose `mdr`); `scene_warnings` (the scene's own, [`crate::io::scene::Scene::warnings`])
+/// come first in `warnings`.
 pub fn oblique_json(
     impact: &Impact,
     opts: &SolveOptions,
     oblique: &Oblique,
     o: &ObliqueOutcome,
+    scene_warnings: &[String],
 ) -> String {
     let mut v = impact_value_of(impact, opts, &o.normal);
     if let Some(map) = v.as_object_mut() {
+        if let Some(list) = map.get_mut("warnings").and_then(|w| w.as_array_mut()) {
+            list.splice(0..0, scene_warnings.iter().map(|w| w.as_str().into()));
+        }
         if let Some(why) = o.reason {
             map.insert("solver_reason".into(), why.into());
             map.insert("fallback".into(), why.into());

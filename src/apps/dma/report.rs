@@ -82,6 +82,16 @@ pub fn material_toml(r: &PronyReport) -> String {
     if let Some(f) = &r.law {
         let _ = writeln!(s, "\n[material.shift]    # temperatures in °C");
         let _ = writeln!(s, "{}", f.law.toml_line());
+        // the isotherms' range: a scene at a temperature outside it is warned
+        let temps = r.isotherms.iter().filter_map(|i| i.temperature);
+        let lo = temps.clone().fold(f64::INFINITY, f64::min);
+        let hi = temps.fold(f64::NEG_INFINITY, f64::max);
+        if lo <= hi {
+            let _ = writeln!(
+                s,
+                "calibrated = [{lo:?}, {hi:?}]    # the isotherms' temperatures"
+            );
+        }
     }
     s
 }

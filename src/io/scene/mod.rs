@@ -57,7 +57,7 @@ use crate::error::{escape_text, Error, Result};
 use crate::model::bodies::{Body, BodyMaterial, Side, TwoBodies};
 use crate::model::geometry::{Cap, Shape, ShapeKeys};
 use crate::model::impact::{Impact, Sphere};
-use crate::model::material::shift::ShiftLaw;
+use crate::model::material::shift::{ShiftLaw, ShiftTable};
 use crate::model::material::Material;
 use crate::model::oblique::{inertia_factor, Oblique, SOLID_SPHERE};
 use crate::solvers::{Resolution, SolveOptions, SolverKind};
@@ -155,8 +155,9 @@ struct RawMaterial {
     bulk: Option<RawBulk>,
     /// Mass density (kg/m^3): enables the quasi-static check of the answers.
     density: Option<f64>,
-    /// Time–temperature shift law (`wlf = {...}` or `arrhenius = {...}`).
-    shift: Option<ShiftLaw>,
+    /// Time–temperature shift law (`wlf = {...}` or `arrhenius = {...}`, optionally
+    /// `calibrated = [t_min, t_max]`).
+    shift: Option<ShiftTable>,
 }
 
 /// `[material.shear]`: `g_inf` with `terms` or `file`, or `instantaneous` with `ratios`.
@@ -219,6 +220,9 @@ pub struct Scene {
     /// The shift factor `log10 a_T` applied to each material with a `[material.shift]` law at
     /// the scene's temperature (its `t_ref` when none is given), with the table it belongs to.
     pub shifts: Vec<(String, f64)>,
+    /// Warnings about the scene's inputs that no solve sees: a temperature outside the range a
+    /// shift law was calibrated on (`calibrated`), one sentence each with its table.
+    pub warnings: Vec<String>,
     /// The tangential inputs (`[friction]`, `[impact] tangential_velocity` and `spin`, the
     /// inertia factors); the default is a frictionless, normal impact.
     pub oblique: Oblique,
@@ -257,9 +261,11 @@ impl Scene {
         })?;
         let temperature = temperature.or(raw.impact.temperature);
         let mut shifts: Vec<(String, f64)> = Vec::new();
+        let mut warnings: Vec<String> = Vec::new();
         let mut at = Temperature {
             celsius: temperature,
             shifts: &mut shifts,
+            warnings: &mut warnings,
         };
         let impact = match (&raw.body, &raw.sphere, &raw.indenter, &raw.material) {
             (Some(bodies), None, None, None) => {
@@ -348,6 +354,7 @@ impl Scene {
             plot,
             temperature,
             shifts,
+            warnings,
             oblique,
         })
     }
@@ -583,6 +590,7 @@ fn has_material_keys(m: &RawMaterial) -> bool {
 struct Temperature<'a> {
     celsius: Option<f64>,
     shifts: &'a mut Vec<(String, f64)>,
+    warnings: &'a mut Vec<String>,
 }
 
 /// The material of a `[material]` table (named `table` in messages): rigid, standard solid or
@@ -606,10 +614,11 @@ fn material_of(
     if let Some(rho) = m.density {
         v = v.with_density(rho).map_err(|e| e.at(table.to_string()))?;
     }
-    if let Some(law) = m.shift {
-        let (shifted, log10_a) = shifted_material(&v, &law, at.celsius, table)?;
+    if let Some(shift) = m.shift {
+        let (shifted, log10_a) = shifted_material(&v, &shift.law, at.celsius, table)?;
         v = shifted;
         at.shifts.push((table.to_string(), log10_a));
+        at.warnings.extend(shift_warning(&shift, at.celsius, table));
     }
     Ok(BodyMaterial::Viscoelastic(v))
 }
@@ -653,6 +662,14 @@ pub fn shifted_material(
         .time_shifted(10f64.powf(log10_a))
         .map_err(|e| e.at(format!("{table} shift")))?;
     Ok((shifted, log10_a))
+}
+
+/// The warning of a material at `temperature` (°C; the law's `t_ref` when `None`) outside the
+/// range its shift law was calibrated on ([`ShiftTable::warning`]), placed at `table`. The one
+/// path of the scene file and the Python binding.
+pub fn shift_warning(shift: &ShiftTable, temperature: Option<f64>, table: &str) -> Option<String> {
+    let t = temperature.unwrap_or(shift.law.t_ref());
+    shift.warning(t).map(|w| format!("{table} shift: {w}"))
 }
 
 /// The error of a temperature given without any shift law (scene and Python binding).

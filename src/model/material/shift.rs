@@ -79,6 +79,115 @@ struct RawArrhenius {
     t_ref: f64,
 }
 
+/// A scene's `[material.shift]` table: the law and, optionally, the temperatures it was
+/// calibrated on, `calibrated = [t_min, t_max]` (°C; `mdr-impact prony` writes the range of its
+/// isotherms). A temperature outside that range is still answered, with a warning that the law
+/// is extrapolated there ([`ShiftTable::warning`]).
+///
+/// ```
+/// # use mdr_impact::model::material::shift::ShiftTable;
+/// let t: ShiftTable = toml::from_str(
+///     "wlf = { c1 = 8.86, c2 = 101.6, t_ref = 25.0 }\ncalibrated = [-30.0, 80.0]",
+/// )
+/// .unwrap();
+/// assert!(t.warning(20.0).is_none());
+/// assert!(t.warning(120.0).unwrap().contains("-30 to 80 °C"));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(try_from = "RawShiftTable")]
+pub struct ShiftTable {
+    /// The shift law.
+    pub law: ShiftLaw,
+    /// The lowest and highest temperature the law was calibrated on (°C), when known.
+    pub calibrated: Option<(f64, f64)>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawShiftTable {
+    wlf: Option<RawWlf>,
+    arrhenius: Option<RawArrhenius>,
+    calibrated: Option<Vec<f64>>,
+}
+
+impl TryFrom<RawShiftTable> for ShiftTable {
+    type Error = Error;
+    fn try_from(raw: RawShiftTable) -> Result<Self> {
+        let law = ShiftLaw::try_from(RawShiftLaw {
+            wlf: raw.wlf,
+            arrhenius: raw.arrhenius,
+        })?;
+        let calibrated = match raw.calibrated.as_deref() {
+            None => None,
+            Some(&[lo, hi]) => Some(ShiftTable::check_range(&law, lo, hi)?),
+            Some(v) => {
+                return Err(Error::OutOfRange {
+                    field: "calibrated: number of temperatures",
+                    value: v.len() as f64,
+                    allowed: "two, [t_min, t_max] (°C)",
+                })
+            }
+        };
+        Ok(ShiftTable { law, calibrated })
+    }
+}
+
+impl ShiftTable {
+    /// `law` calibrated on `lo ..= hi` (°C): both finite, `lo <= hi`, and the law defined at
+    /// `lo` (above absolute zero; WLF above `t_ref - c2`).
+    pub fn new(law: ShiftLaw, calibrated: Option<(f64, f64)>) -> Result<Self> {
+        let calibrated = match calibrated {
+            Some((lo, hi)) => Some(Self::check_range(&law, lo, hi)?),
+            None => None,
+        };
+        Ok(ShiftTable { law, calibrated })
+    }
+
+    fn check_range(law: &ShiftLaw, lo: f64, hi: f64) -> Result<(f64, f64)> {
+        check(
+            "calibrated[1]",
+            hi,
+            hi.is_finite(),
+            "a finite temperature (°C)",
+        )?;
+        let allowed = "t_min <= t_max, where the law is defined (above -273.15 °C; WLF above \
+                       t_ref - c2)";
+        check(
+            "calibrated[0]",
+            lo,
+            lo <= hi && law.log10_a(lo).is_ok(),
+            allowed,
+        )?;
+        Ok((lo, hi))
+    }
+
+    /// The warning of a temperature `t` (°C) outside the calibrated range, `None` inside it or
+    /// without a range.
+    pub fn warning(&self, t: f64) -> Option<String> {
+        let (lo, hi) = self.calibrated?;
+        (t < lo || t > hi).then(|| {
+            format!(
+                "temperature {t} °C lies outside the {lo} to {hi} °C the {} shift law was \
+                 calibrated on (calibrated = [{lo:?}, {hi:?}]): a_T is extrapolated there, and \
+                 with it every relaxation time",
+                match self.law {
+                    ShiftLaw::Wlf { .. } => "WLF",
+                    ShiftLaw::Arrhenius { .. } => "Arrhenius",
+                }
+            )
+        })
+    }
+
+    /// The body of a `[material.shift]` table: [`ShiftLaw::toml_line`], then `calibrated`
+    /// when known.
+    pub fn toml_lines(&self) -> String {
+        match self.calibrated {
+            Some((lo, hi)) => format!("{}\ncalibrated = [{lo:?}, {hi:?}]", self.law.toml_line()),
+            None => self.law.toml_line(),
+        }
+    }
+}
+
 impl TryFrom<RawShiftLaw> for ShiftLaw {
     type Error = Error;
     fn try_from(raw: RawShiftLaw) -> Result<Self> {
