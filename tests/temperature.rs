@@ -276,6 +276,20 @@ fn temperatures_outside_the_calibrated_range_are_warned() {
         "{}",
         common::stderr(&o)
     );
+    // the scene's warning reaches the other commands that read it: curve --v0 and dem
+    std::fs::write(dir.path().join("s.toml"), with_range(100.0)).unwrap();
+    let o = run(&["curve", "s.toml", "--v0", "0.5:2:3"], dir.path());
+    let err = common::stderr(&o);
+    assert!(err.contains(&format!("warning: {needle}")), "{err}");
+    let o = run(
+        &["dem", "s.toml", "--v0", "0.5:2:3", "--format", "json"],
+        dir.path(),
+    );
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(
+        j["warnings"][0].as_str().unwrap().starts_with(needle),
+        "{j}"
+    );
     for (range, field) in [
         ("[80.0, -20.0]", "calibrated[0]"),
         ("[-200.0, 80.0]", "calibrated[0]"),

@@ -139,6 +139,14 @@ fn cmd_run(RunArgs { scene, json, out }: RunArgs) -> Outcome {
     Ok(())
 }
 
+/// The scene's own warnings ([`Scene::warnings`]) on stderr, for the commands whose stdout is
+/// a summary of many solves.
+fn warn_scene(scene: &Scene) {
+    for w in &scene.warnings {
+        eprintln!("warning: {w}");
+    }
+}
+
 /// How plots name a scene: its file stem, or "default scene".
 fn scene_name(path: Option<&Path>) -> String {
     path.and_then(|p| p.file_stem())
@@ -173,6 +181,7 @@ fn cmd_curve(
     })?;
     let written = curve::write_outputs(&out, &c, log, &name)?;
     out!("{}", curve::summary(&c, Some(&written)));
+    warn_scene(&scene);
     Ok(())
 }
 
@@ -196,6 +205,7 @@ fn cmd_curve_angle(scene: Option<&Path>, spec: &str, speed: f64, out: &Path) -> 
     for path in ca::write_outputs(out, &rows, &name)? {
         outln!("{:<28}{}", "written", path.display());
     }
+    warn_scene(&scene);
     Ok(())
 }
 
@@ -234,9 +244,10 @@ fn cmd_dem(a: DemArgs) -> Outcome {
     // the input is checked before the scene is read or anything solved
     let range = curve::VelocityRange::parse(&a.v0, a.log)?;
     let scene = scene_or_default(a.scene.as_deref())?;
-    let report = with_progress(range.n as u64, "dem", |tick| {
+    let mut report = with_progress(range.n as u64, "dem", |tick| {
         dem::run(&scene.impact, &scene.options, &range, modulus, tick)
     })?;
+    report.warnings.splice(0..0, scene.warnings.iter().cloned());
     let written = dem::write_outputs(&a.out, &report, format)?;
     out!("{}", report.text(format));
     if format == dem::Format::Json {
