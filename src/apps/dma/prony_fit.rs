@@ -22,7 +22,7 @@ use crate::error::{Error, Result};
 pub const WINDOW_EXTENSION: f64 = 0.5;
 
 /// Relaxation times per decade of the default (`--terms auto`) fit.
-pub const TERMS_PER_DECADE: f64 = 2.0;
+pub const TERMS_PER_DECADE: f64 = 3.0;
 
 /// Terms whose modulus is below this fraction of the glassy modulus are dropped (they carry
 /// nothing the data can see) and the rest refitted.
