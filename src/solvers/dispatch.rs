@@ -88,9 +88,12 @@ pub fn solve(impact: &Impact, opts: &SolveOptions) -> Result<Outcome> {
 pub const LIQUID_PLACE: &str = "g_inf = 0, a viscoelastic liquid that may hold the sphere (the \
     CoR tends to 0 and the contact time to inf when it relaxes fast against the contact)";
 
-/// The relaxed Hertz estimate of `a_max / R` of an impactor with a radius, when it exceeds 1:
-/// a material whose relaxed modulus alone cannot hold the sphere within the half-space model
-/// (`g_inf` far below the glassy modulus; the solvers fail on it as on a liquid, `g_inf = 0`).
+/// The relaxed Hertz estimate of `a_max / R` of an impactor with a radius, when it exceeds 1
+/// while the glassy one stays below 1: a material whose relaxed modulus alone cannot hold the
+/// sphere within the half-space model, though its glassy modulus could (`g_inf` far below the
+/// glassy modulus; the solvers fail on it as on a liquid, `g_inf = 0`). The Hertz contact
+/// radius scales as `E*^(-1/5)`, so the glassy estimate is the relaxed one times
+/// `(G_eq(inf) / G_eq(0))^(1/5)`.
 fn relaxed_sinks(impact: &Impact) -> Option<f64> {
     let r = impact
         .shape()
@@ -100,7 +103,9 @@ fn relaxed_sinks(impact: &Impact) -> Option<f64> {
         .ok()?
         .max_contact_radius()
         / r;
-    (r.is_finite() && x > 1.0).then_some(x)
+    let g = impact.equivalent_relaxation();
+    let glassy = x * (g.relaxed / g.glassy()).powf(0.2);
+    (r.is_finite() && x > 1.0 && glassy < 1.0).then_some(x)
 }
 
 /// The relaxed Hertz estimate of `a_max` (an upper bound: the viscoelastic material is stiffer)
