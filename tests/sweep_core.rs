@@ -323,3 +323,36 @@ fn figures_command_on_a_coarse_grid() {
         Err(Error::OutOfRange { field: "n-p2", .. })
     ));
 }
+
+/// A point refused before its impact exists (p2 = 1e-300) has empty input cells, never `NaN`,
+/// and a resume reads the file back without recomputing it.
+#[test]
+fn refused_points_write_no_nan_and_resume() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = [
+        "sweep",
+        "--nu",
+        "0.45",
+        "--log-p2",
+        "-300:300:3",
+        "--log-p3",
+        "-2:3:3",
+        "--out",
+        "sw.csv",
+    ];
+    let o = crate::common::run(&args, dir.path());
+    assert!(o.status.success(), "{}", crate::common::stderr(&o));
+    let csv = std::fs::read_to_string(dir.path().join("sw.csv")).unwrap();
+    assert!(!csv.contains("NaN") && !csv.contains(",inf"), "{csv}");
+    let failed: Vec<&str> = csv
+        .lines()
+        .filter(|l| l.split(',').nth(2) == Some("1e-300"))
+        .collect();
+    assert_eq!(failed.len(), 3, "{csv}");
+    let o = crate::common::run(&args, dir.path());
+    assert!(o.status.success(), "{}", crate::common::stderr(&o));
+    assert_eq!(
+        std::fs::read_to_string(dir.path().join("sw.csv")).unwrap(),
+        csv
+    );
+}

@@ -301,3 +301,73 @@ fn temperatures_outside_the_calibrated_range_are_warned() {
         assert!(e.contains(field) && !e.contains('\n'), "{range}: {e}");
     }
 }
+
+/// `calibrated` spans the measured rows (an isotherm's rows at 80.0 and 80.4 °C end it at
+/// 80.4, not at their mean), in material.toml and in `prony --json`; `indent --scene` warns as
+/// `run` does; far temperatures print in e-notation, and WLF stays finite there.
+#[test]
+fn calibrated_spans_the_measured_rows_and_reaches_indent() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut data = String::from("frequency,storage,loss,temperature\n");
+    for (t, shift) in [(20.0, 1.0), (40.0, 0.1)] {
+        for k in 0..9 {
+            let f = 10f64.powf(-1.0 + 0.5 * k as f64);
+            let w = f * shift;
+            let (g1, g2) = (1e6 + 1e7 * w * w / (1.0 + w * w), 1e7 * w / (1.0 + w * w));
+            let t = if t == 40.0 && k % 2 == 1 { 40.4 } else { t };
+            data.push_str(&format!("{f},{g1},{g2},{t}\n"));
+        }
+    }
+    std::fs::write(dir.path().join("d.csv"), data).unwrap();
+    let o = run(
+        &[
+            "prony",
+            "d.csv",
+            "--shift",
+            "arrhenius",
+            "--out",
+            "p",
+            "--json",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(j["calibrated"], serde_json::json!([20.0, 40.4]), "{j}");
+    let material = std::fs::read_to_string(dir.path().join("p/material.toml")).unwrap();
+    assert!(material.contains("calibrated = [20.0, 40.4]"), "{material}");
+    // indent --scene at a temperature outside the range
+    let text = format!(
+        "[sphere]\nmass = 4.11e-3\nradius = 5.0e-3\n\n[impact]\nvelocity = 1.0\n\
+         temperature = 60.0\n\n{material}"
+    );
+    std::fs::write(dir.path().join("s.toml"), text).unwrap();
+    let o = run(
+        &[
+            "indent",
+            "--history",
+            "triangle",
+            "--rate",
+            "1e-3",
+            "--peak-time",
+            "1e-3",
+            "--scene",
+            "s.toml",
+            "--times",
+            "1e-3",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    assert!(
+        common::stderr(&o).contains("temperature 60 °C lies outside the 20 to 40.4 °C"),
+        "{}",
+        common::stderr(&o)
+    );
+    // 1e308 °C: WLF tends to -c1 (no -inf from c1 (T - t_ref)), and the text is short
+    let law = ShiftLaw::wlf(8.86, 101.6, 25.0).unwrap();
+    assert!((law.log10_a(1e308).unwrap() + 8.86).abs() < 1e-12);
+    let hot = scene(TAUS, Some(1e308), true) + "calibrated = [-20.0, 80.0]\n";
+    let w = Scene::parse(&hot).unwrap().warnings.join(" ");
+    assert!(w.contains("temperature 1e308 °C lies outside"), "{w}");
+}

@@ -10,6 +10,7 @@ use crate::error::{escape_text, Error, Result, ResultExt};
 use crate::io::output::{fmt, write_all_atomic};
 use crate::io::plot::{panels_svg, CorLine, Panel, COR_AXIS_TOP};
 use crate::io::scene::Scene;
+use crate::model::material::shift::celsius_text;
 use crate::solvers::{solve, SolveOptions};
 use plotters::style::RGBColor;
 
@@ -119,10 +120,12 @@ pub fn run(
         .collect();
     let warnings = match (outside.first(), outside.last()) {
         (Some((lo, first)), Some((hi, _))) => vec![format!(
-            "{} of {} temperatures (the lowest {lo} °C, the highest {hi} °C) lie outside a \
+            "{} of {} temperatures (the lowest {} °C, the highest {} °C) lie outside a \
              shift law's calibrated range; the first: {first}",
             outside.len(),
-            solved.len()
+            solved.len(),
+            celsius_text(*lo),
+            celsius_text(*hi)
         )],
         _ => Vec::new(),
     };

@@ -106,7 +106,7 @@ fn cmd_run(RunArgs { scene, json, out }: RunArgs) -> Outcome {
         for (table, log10_a) in &scene.shifts {
             let log10_a = log10_a + 0.0; // no "-0.0000" at the reference temperature
             let at = match scene.temperature {
-                Some(t) => format!("{t} °C"),
+                Some(t) => format!("{} °C", mdr_impact::model::material::shift::celsius_text(t)),
                 None => "its reference temperature".to_string(),
             };
             outln!(
@@ -350,6 +350,9 @@ fn cmd_indent(a: IndentArgs) -> Outcome {
     let (kind, rate, peak, times) = (a.history, a.rate, a.peak_time, a.times.as_deref());
     let rows = indent::run(&material, &shape, kind, rate, peak, times, a.solver.into())?;
     // stdout holds the CSV alone
+    if let Some(scene) = &scene {
+        warn_scene(scene);
+    }
     for w in indent::warnings(&shape, &rows) {
         eprintln!("warning: {w}");
     }

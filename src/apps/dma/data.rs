@@ -54,6 +54,8 @@ impl std::str::FromStr for ModulusKind {
 pub struct Isotherm {
     /// Temperature (°C), the mean of its rows.
     pub temperature: Option<f64>,
+    /// The lowest and highest temperature of its rows (°C), as measured.
+    pub measured: Option<(f64, f64)>,
     /// `(omega, G', G'')`, by increasing `omega`.
     pub points: Vec<(f64, f64, f64)>,
 }
@@ -261,6 +263,13 @@ pub fn parse(text: &str, file: &str, modulus: ModulusKind, nu: f64) -> Result<Dm
         let temperature = g[0]
             .0
             .map(|_| g.iter().map(|r| r.0.unwrap_or(0.0)).sum::<f64>() / g.len() as f64);
+        let measured = g[0].0.map(|_| {
+            let t = g.iter().map(|r| r.0.unwrap_or(0.0));
+            (
+                t.clone().fold(f64::INFINITY, f64::min),
+                t.fold(f64::NEG_INFINITY, f64::max),
+            )
+        });
         g.sort_by(|a, b| a.1.total_cmp(&b.1));
         let mut points: Vec<(f64, f64, f64)> = Vec::new();
         let mut counts: Vec<usize> = Vec::new();
@@ -302,6 +311,7 @@ pub fn parse(text: &str, file: &str, modulus: ModulusKind, nu: f64) -> Result<Dm
         }
         isotherms.push(Isotherm {
             temperature,
+            measured,
             points,
         });
     }

@@ -82,18 +82,24 @@ pub fn material_toml(r: &PronyReport) -> String {
     if let Some(f) = &r.law {
         let _ = writeln!(s, "\n[material.shift]    # temperatures in °C");
         let _ = writeln!(s, "{}", f.law.toml_line());
-        // the isotherms' range: a scene at a temperature outside it is warned
-        let temps = r.isotherms.iter().filter_map(|i| i.temperature);
-        let lo = temps.clone().fold(f64::INFINITY, f64::min);
-        let hi = temps.fold(f64::NEG_INFINITY, f64::max);
-        if lo <= hi {
+        // the measured range: a scene at a temperature outside it is warned
+        if let Some((lo, hi)) = calibrated(r) {
             let _ = writeln!(
                 s,
-                "calibrated = [{lo:?}, {hi:?}]    # the isotherms' temperatures"
+                "calibrated = [{lo:?}, {hi:?}]    # the data's temperatures"
             );
         }
     }
     s
+}
+
+/// The lowest and highest measured temperature of the data's rows (°C), `None` without a
+/// temperature column: the range the fitted shift law is calibrated on.
+pub fn calibrated(r: &PronyReport) -> Option<(f64, f64)> {
+    let ranges = r.isotherms.iter().filter_map(|i| i.measured);
+    let lo = ranges.clone().map(|m| m.0).fold(f64::INFINITY, f64::min);
+    let hi = ranges.map(|m| m.1).fold(f64::NEG_INFINITY, f64::max);
+    (lo <= hi).then_some((lo, hi))
 }
 
 /// `prony.csv`: the terms as `tau,modulus` (s, Pa), the table format of a scene's `file`.
@@ -210,9 +216,11 @@ pub fn summary(r: &PronyReport) -> String {
 /// The JSON object of `prony --json`: `g_inf` (Pa), `terms` (`[[g_i, tau_i], ...]`, Pa, s),
 /// `shift` (the law's object, see [`super::shift::ShiftLaw::json`], or null), `log10_shift`
 /// (`[{"temperature": °C, "log10_shift": ..}, ...]`; one entry with temperature null without
-/// a temperature column), `rms_rel_error`, `warnings`.
+/// a temperature column), `calibrated` (`[t_min, t_max]`, °C, the data's temperatures, as in
+/// `material.toml`; null without a shift law), `rms_rel_error`, `warnings`.
 pub fn json(r: &PronyReport) -> serde_json::Value {
     serde_json::json!({
+        "calibrated": r.law.as_ref().and(calibrated(r)).map(|(lo, hi)| [lo, hi]),
         "g_inf": r.series.g_inf,
         "terms": r.series.terms.iter().map(|&(g, t)| [g, t]).collect::<Vec<_>>(),
         "shift": r.law.as_ref().map(|f| f.law.json()),

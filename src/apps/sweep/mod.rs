@@ -60,7 +60,7 @@ pub const DIMENSIONAL_RANGES: [(&str, f64, f64); 4] = [
 /// `cor_error_estimate` the solver's estimate of its relative error (empty when unknown);
 /// `contact_time, max_indentation` are in canonical units (divided by the Hertz scales);
 /// `mass, radius, velocity, g_inf, g_1, eta, k_0` are the SI inputs actually solved (`k_0` empty
-/// when incompressible); `cor_canonical, scaling_dev` the canonical CoR and
+/// when incompressible; all empty for a point refused before its impact exists); `cor_canonical, scaling_dev` the canonical CoR and
 /// `|cor - cor_canonical| / cor_canonical` on the checked subsample (empty elsewhere);
 /// `solver, rtol, dimensional` the requested solver, accuracy and input mode (`1`: random
 /// dimensional inputs); `seconds` the wall time of the point; `error` the failure message (empty on

@@ -58,7 +58,8 @@ impl Record {
             opt(self.contact_time),
             opt(self.max_indentation),
         ];
-        f.extend(self.inputs.iter().map(|&x| fmt(x)));
+        // a point refused before its impact was built has no inputs: empty cells, never NaN
+        f.extend(self.inputs.iter().map(|&x| opt(x.is_finite().then_some(x))));
         f.extend([
             opt(self.k_0),
             opt(self.cor_canonical),
@@ -114,7 +115,14 @@ impl Record {
             cor_error_estimate: onum(7)?,
             contact_time: onum(8)?,
             max_indentation: onum(9)?,
-            inputs: [num(10)?, num(11)?, num(12)?, num(13)?, num(14)?, num(15)?],
+            inputs: [
+                onum(10)?.unwrap_or(f64::NAN),
+                onum(11)?.unwrap_or(f64::NAN),
+                onum(12)?.unwrap_or(f64::NAN),
+                onum(13)?.unwrap_or(f64::NAN),
+                onum(14)?.unwrap_or(f64::NAN),
+                onum(15)?.unwrap_or(f64::NAN),
+            ],
             k_0: onum(16)?,
             cor_canonical: onum(17)?,
             scaling_dev: onum(18)?,

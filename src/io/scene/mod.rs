@@ -637,12 +637,13 @@ pub fn shifted_material(
     table: &str,
 ) -> Result<(Material, f64)> {
     let t = temperature.unwrap_or(law.t_ref());
+    let tt = crate::model::material::shift::celsius_text(t);
     let log10_a = law
         .log10_a(t)
         .map_err(|e| e.at(format!("{table} shift at [impact] temperature")))?;
     if log10_a > MAX_LOG10_SHIFT {
         return Err(scene_error(format!(
-            "{table} shift: [impact] temperature = {t} °C gives log10 a_T = {log10_a:.4e}, \
+            "{table} shift: [impact] temperature = {tt} °C gives log10 a_T = {log10_a:.4e}, \
              relaxation times beyond a double's range; allowed: temperature > {:.4} °C for this \
              law (log10 a_T < {MAX_LOG10_SHIFT})",
             law.min_temperature(MAX_LOG10_SHIFT)
@@ -653,7 +654,7 @@ pub fn shifted_material(
             .max_temperature(MAX_LOG10_SHIFT)
             .map_or_else(|| "none".to_string(), |t| format!("{t:.4}"));
         return Err(scene_error(format!(
-            "{table} shift: [impact] temperature = {t} °C gives log10 a_T = {log10_a:.4e}, \
+            "{table} shift: [impact] temperature = {tt} °C gives log10 a_T = {log10_a:.4e}, \
              relaxation times below a double's range; allowed: temperature < {bound} °C for \
              this law (log10 a_T > -{MAX_LOG10_SHIFT})"
         )));

@@ -166,10 +166,13 @@ impl ShiftTable {
     pub fn warning(&self, t: f64) -> Option<String> {
         let (lo, hi) = self.calibrated?;
         (t < lo || t > hi).then(|| {
+            let (t, c) = (celsius_text(t), |x: f64| celsius_text(x));
             format!(
-                "temperature {t} °C lies outside the {lo} to {hi} °C the {} shift law was \
+                "temperature {t} °C lies outside the {} to {} °C the {} shift law was \
                  calibrated on (calibrated = [{lo:?}, {hi:?}]): a_T is extrapolated there, and \
                  with it every relaxation time",
+                c(lo),
+                c(hi),
                 match self.law {
                     ShiftLaw::Wlf { .. } => "WLF",
                     ShiftLaw::Arrhenius { .. } => "Arrhenius",
@@ -260,7 +263,8 @@ impl ShiftLaw {
                     t - t_ref + c2 > 0.0,
                     "T > t_ref - c2 (°C; WLF is singular at t_ref - c2)",
                 )? - t_ref;
-                Ok(-c1 * d / (c2 + d))
+                // -c1 d / (c2 + d), with the quotient first: c1 d overflows for d near 1e308
+                Ok(-c1 * (d / (c2 + d)))
             }
             ShiftLaw::Arrhenius {
                 activation_energy,
@@ -355,6 +359,16 @@ impl ShiftLaw {
                 "arrhenius = {{ activation_energy = {activation_energy:?}, t_ref = {t_ref:?} }}"
             ),
         }
+    }
+}
+
+/// A temperature (°C) as messages write it: as given in the usual range (`100`, `-20.5`),
+/// in e-notation far outside it (`1e308`, not 309 digits).
+pub fn celsius_text(t: f64) -> String {
+    if t == 0.0 || (1e-4..1e6).contains(&t.abs()) {
+        format!("{t}")
+    } else {
+        format!("{t:e}")
     }
 }
 
