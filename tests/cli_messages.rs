@@ -94,6 +94,26 @@ fn fix_outside_the_fit_box_is_refused() {
         assert!(stderr(&o).contains(needle), "{}", stderr(&o));
         assert!(!dir.path().join("res").exists());
     }
+    // fixed values are reported as given, not after a round trip through the fit's coordinates
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let drops = root.join("examples/data/drops.csv");
+    let o = run(
+        &[
+            "fit",
+            drops.to_str().unwrap(),
+            "--fix",
+            "g_inf=1e6",
+            "--fix",
+            "nu=0.45",
+            "--out",
+            "fixed",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let toml = std::fs::read_to_string(dir.path().join("fixed/fit.toml")).unwrap();
+    assert!(toml.contains("g_inf = 1e6    # fixed"), "{toml}");
+    assert!(toml.contains("poisson = 4.5e-1    # fixed"), "{toml}");
     // the box's own edge is inside it
     let o = run(
         &[

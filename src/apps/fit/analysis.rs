@@ -9,12 +9,19 @@ use crate::model::tolerances::FIT_SHOULDER_LEVEL;
 /// Uncertainty and identifiability at the estimate (module docs).
 pub(super) fn analyse(
     ctx: &Ctx,
-    (best_ssr, values): (f64, Vec<f64>),
+    (best_ssr, mut values): (f64, Vec<f64>),
     others: &[(f64, Vec<f64>)],
     fixed: &[Option<f64>],
     free: &[usize],
     moving: &[usize],
 ) -> Result<FitResult> {
+    // the fixed values as given, not their round trip through the fit coordinates
+    // (`--fix g_inf=1e6` was reported as 9.999999999999995e5)
+    for (v, f) in values.iter_mut().zip(fixed) {
+        if let Some(f) = f {
+            *v = *f;
+        }
+    }
     let model = ctx.model;
     let np = model.params.len();
     let coords = ctx.coords(&values);
@@ -95,10 +102,10 @@ pub(super) fn analyse(
                     a: &[f64],
                     coord: f64,
                     back: &dyn Fn(f64) -> f64,
-                    is_fixed: bool|
+                    fixed_value: Option<f64>|
      -> Estimate {
         let value = back(coord);
-        if is_fixed {
+        if let Some(value) = fixed_value {
             return Estimate {
                 name,
                 unit,
@@ -177,7 +184,7 @@ pub(super) fn analyse(
                 &a,
                 coords[i],
                 &|c| p.kind.from_coord(c),
-                fixed[i].is_some(),
+                fixed[i],
             )
         })
         .collect();
@@ -206,7 +213,7 @@ pub(super) fn analyse(
                 grad,
                 value.ln(),
                 &f64::exp,
-                all_fixed,
+                all_fixed.then_some(value),
             )
         })
         .collect();
