@@ -271,10 +271,24 @@ fn temperatures_outside_the_calibrated_range_are_warned() {
         &["curve", "s.toml", "--temperature", "-20:80:6"],
         dir.path(),
     );
+    // (inside the range: no calibration warning; the warm rows' a_max/R of 0.378 is warned)
     assert!(
-        !common::stderr(&o).contains("warning"),
+        !common::stderr(&o).contains("calibrated"),
         "{}",
         common::stderr(&o)
+    );
+    // rows outside the model's validity are warned as curve --v0 warns (20 m/s: a_max/R > 1)
+    let fast = scene(TAUS, Some(20.0), true).replace("velocity = 1.0", "velocity = 20.0");
+    std::fs::write(dir.path().join("fast.toml"), fast).unwrap();
+    let o = run(
+        &["curve", "fast.toml", "--temperature", "0:40:3"],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let err = common::stderr(&o);
+    assert!(
+        err.contains("warning: 3 of 3 temperatures lie outside the model's validity (from 0 °C; a_max/R up to"),
+        "{err}"
     );
     // the scene's warning reaches the other commands that read it: curve --v0 and dem
     std::fs::write(dir.path().join("s.toml"), with_range(100.0)).unwrap();

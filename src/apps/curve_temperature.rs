@@ -11,6 +11,7 @@ use crate::io::output::{fmt, write_all_atomic};
 use crate::io::plot::{panels_svg, CorLine, Panel, COR_AXIS_TOP};
 use crate::io::scene::Scene;
 use crate::model::material::shift::celsius_text;
+use crate::model::validity::Validity;
 use crate::solvers::{solve, SolveOptions};
 use plotters::style::RGBColor;
 
@@ -82,8 +83,9 @@ pub struct TemperatureRow {
 /// with its own velocity and solver (histories off), in parallel, rows in input order;
 /// `progress` is called once per temperature. The scene needs a `[material.shift]` law; an
 /// error names the temperature. Also returns the warnings of the scene at those temperatures
-/// ([`Scene::warnings`]: temperatures outside the range a shift law was calibrated on), one
-/// sentence per kind, naming how many temperatures it concerns.
+/// ([`Scene::warnings`]: temperatures outside the range a shift law was calibrated on) and of
+/// the answers outside the model's validity ([`Validity`], as `run` warns at one temperature),
+/// one sentence per kind, naming how many temperatures it concerns.
 pub fn run(
     text: &str,
     base: &Path,
@@ -92,7 +94,8 @@ pub fn run(
 ) -> Result<(Vec<TemperatureRow>, Vec<String>)> {
     // the scene as written first: its own errors are reported as they are
     Scene::parse_in(text, base)?;
-    let solved: Vec<(TemperatureRow, Vec<String>)> = temperatures
+    type Solved = (TemperatureRow, Vec<String>, Option<(f64, Option<f64>)>);
+    let solved: Vec<Solved> = temperatures
         .par_iter()
         .map(|&t| {
             let row = Scene::parse_at(text, base, Some(t)).and_then(|scene| {
@@ -101,6 +104,10 @@ pub fn run(
                     ..scene.options
                 };
                 let o = solve(&scene.impact, &opts)?;
+                // the validity measures of a row outside the model's validity
+                let v = Validity::of(&scene.impact, &o);
+                let invalid = (!v.warnings.is_empty())
+                    .then_some((v.contact_radius_ratio, v.wave_transit_ratio));
                 let row = TemperatureRow {
                     temperature: t,
                     cor: o.cor,
@@ -108,7 +115,7 @@ pub fn run(
                     max_force: o.max_force,
                     max_compression: o.max_indentation,
                 };
-                Ok((row, scene.warnings))
+                Ok((row, scene.warnings, invalid))
             });
             progress();
             row.at(|| format!("--temperature: at {t} °C"))
@@ -116,9 +123,13 @@ pub fn run(
         .collect::<Result<_>>()?;
     let outside: Vec<(f64, &String)> = solved
         .iter()
-        .filter_map(|(r, w)| w.first().map(|w| (r.temperature, w)))
+        .filter_map(|(r, w, _)| w.first().map(|w| (r.temperature, w)))
         .collect();
-    let warnings = match (outside.first(), outside.last()) {
+    let invalid: Vec<(f64, (f64, Option<f64>))> = solved
+        .iter()
+        .filter_map(|(r, _, m)| m.map(|m| (r.temperature, m)))
+        .collect();
+    let mut warnings = match (outside.first(), outside.last()) {
         (Some((lo, first)), Some((hi, _))) => vec![format!(
             "{} of {} temperatures (the lowest {} °C, the highest {} °C) lie outside a \
              shift law's calibrated range; the first: {first}",
@@ -129,7 +140,17 @@ pub fn run(
         )],
         _ => Vec::new(),
     };
-    Ok((solved.into_iter().map(|(r, _)| r).collect(), warnings))
+    if let Some((first, _)) = invalid.first() {
+        let worst = crate::model::validity::worst_measures(invalid.iter().map(|s| s.1));
+        warnings.push(format!(
+            "{} of {} temperatures lie outside the model's validity (from {} °C; {worst}; \
+             `run --json` at one of them says why)",
+            invalid.len(),
+            solved.len(),
+            celsius_text(*first)
+        ));
+    }
+    Ok((solved.into_iter().map(|(r, _, _)| r).collect(), warnings))
 }
 
 /// The CSV text of the rows: header [`CSV_HEADER`], full-precision SI numbers.
