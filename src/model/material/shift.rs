@@ -80,8 +80,8 @@ struct RawArrhenius {
 }
 
 /// A scene's `[material.shift]` table: the law and, optionally, the temperatures it was
-/// calibrated on, `calibrated = [t_min, t_max]` (°C; `mdr-impact prony` writes the range of its
-/// isotherms). A temperature outside that range is still answered, with a warning that the law
+/// calibrated on, `calibrated = [t_min, t_max]` (°C; `mdr-impact prony` writes the lowest and
+/// highest temperature of its data's rows). A temperature outside that range is still answered, with a warning that the law
 /// is extrapolated there ([`ShiftTable::warning`]).
 ///
 /// ```
@@ -166,28 +166,19 @@ impl ShiftTable {
     pub fn warning(&self, t: f64) -> Option<String> {
         let (lo, hi) = self.calibrated?;
         (t < lo || t > hi).then(|| {
-            let (t, c) = (celsius_text(t), |x: f64| celsius_text(x));
             format!(
-                "temperature {t} °C lies outside the {} to {} °C the {} shift law was \
+                "temperature {} °C lies outside the {} to {} °C the {} shift law was \
                  calibrated on (calibrated = [{lo:?}, {hi:?}]): a_T is extrapolated there, and \
                  with it every relaxation time",
-                c(lo),
-                c(hi),
+                celsius_text(t),
+                celsius_text(lo),
+                celsius_text(hi),
                 match self.law {
                     ShiftLaw::Wlf { .. } => "WLF",
                     ShiftLaw::Arrhenius { .. } => "Arrhenius",
                 }
             )
         })
-    }
-
-    /// The body of a `[material.shift]` table: [`ShiftLaw::toml_line`], then `calibrated`
-    /// when known.
-    pub fn toml_lines(&self) -> String {
-        match self.calibrated {
-            Some((lo, hi)) => format!("{}\ncalibrated = [{lo:?}, {hi:?}]", self.law.toml_line()),
-            None => self.law.toml_line(),
-        }
     }
 }
 
